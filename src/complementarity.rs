@@ -1,0 +1,394 @@
+//! The contact solve: the mixed linear complementarity problem
+//! P ≥ 0, d = A_s P + R λ + g ≥ 0, Pᵀd = 0, E P + L = 0 (paper eq. 8, 42–43)
+//! on the condensed contact points.
+//!
+//! The primary method is a primal–dual active-set (semismooth Newton) iteration warm-started
+//! from the last active set of the same sliding direction; when the set does not change the
+//! factorisation of the reduced system is reused and a solve is two triangular sweeps. If the
+//! iteration cycles or the reduced system is singular, Lemke's method (guaranteed to
+//! terminate) takes over. The paper's penalty method is the same LCP with the compliance
+//! 1/(c_n w_i t) added to the diagonal: the penetration is then −p/c_n instead of zero.
+
+use crate::contact::CondensedContact;
+use crate::dense::DenseLu;
+use crate::lemke::lemke;
+
+/// How the complementarity problem is solved.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Method {
+    /// Active set with Lemke fallback (exact).
+    ActiveSet,
+    /// Lemke's method only (exact, slower).
+    Lemke,
+    /// Penalty regularisation with normal stiffness c_n (MPa/mm), solved exactly.
+    Penalty {
+        /// c_n, MPa/mm.
+        stiffness: f64,
+    },
+}
+
+/// Sliding direction of a half cycle: friction on body 1 is s μ p τ with s = ±1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Direction {
+    /// s = +1.
+    Plus,
+    /// s = −1.
+    Minus,
+}
+
+impl Direction {
+    /// s = ±1.
+    pub fn sign(self) -> f64 {
+        match self {
+            Direction::Plus => 1.0,
+            Direction::Minus => -1.0,
+        }
+    }
+    /// The other direction.
+    pub fn reversed(self) -> Direction {
+        match self {
+            Direction::Plus => Direction::Minus,
+            Direction::Minus => Direction::Plus,
+        }
+    }
+    /// "+" or "-".
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Direction::Plus => "+",
+            Direction::Minus => "-",
+        }
+    }
+    fn index(self) -> usize {
+        match self {
+            Direction::Plus => 0,
+            Direction::Minus => 1,
+        }
+    }
+}
+
+/// Outcome of a solve.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// Converged: residuals at round-off.
+    Solved,
+    /// Neither the active set nor Lemke's method found a solution; the last iterate is kept.
+    Failed,
+}
+
+/// What a solve did and how well.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolveInfo {
+    /// Solved or failed.
+    pub status: Status,
+    /// Active-set iterations (reduced-system solves).
+    pub iterations: usize,
+    /// Factorisations of the reduced system.
+    pub factorisations: usize,
+    /// Pivots of Lemke's method (0 if not used).
+    pub lemke_pivots: usize,
+    /// max_i |min(p_i, d_i/(A_ii w_i t))| / max p: complementarity in units of the peak pressure.
+    pub complementarity: f64,
+    /// |E P + L|∞ relative to the load: equilibrium of the plate.
+    pub equilibrium: f64,
+}
+
+/// Pressures, gaps and rigid-body motion of one solve.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ContactSolution {
+    /// Contact pressure p_i, MPa.
+    pub pressure: Vec<f64>,
+    /// Contact force P_i = p_i w_i t, N.
+    pub force: Vec<f64>,
+    /// Gap d_i after deformation, mm (negative = penetration, penalty method only).
+    pub gap: Vec<f64>,
+    /// Rigid plate unknowns λ (λ_F mm downwards, λ_M rad about +y).
+    pub rigid: Vec<f64>,
+    /// Points in contact.
+    pub active: Vec<bool>,
+}
+
+struct Cached {
+    active: Vec<bool>,
+    lu: DenseLu,
+    valid: bool,
+}
+
+/// A reusable solver for one condensed contact problem.
+pub struct ContactSolver {
+    n: usize,
+    m: usize,
+    method: Method,
+    /// A_s per direction (with the penalty compliance on the diagonal), row-major N × N.
+    a: [Vec<f64>; 2],
+    /// E per direction, row-major m × N.
+    e: [Vec<f64>; 2],
+    /// R, row-major N × m.
+    r: Vec<f64>,
+    load: Vec<f64>,
+    /// Converts a gap at point i into a pressure: 1/(A_nn(i,i) w_i t).
+    gap_to_pressure: Vec<f64>,
+    penalty_compliance: Vec<f64>,
+    area: Vec<f64>,
+    cache: [Cached; 2],
+    rhs: Vec<f64>,
+    scratch: Vec<f64>,
+    index: Vec<usize>,
+    /// Most active-set iterations before Lemke's method takes over.
+    pub max_iterations: usize,
+}
+
+impl ContactSolver {
+    /// Prepare the solver: the two direction-dependent matrices are formed once.
+    pub fn new(contact: &CondensedContact, method: Method) -> ContactSolver {
+        let n = contact.len();
+        let m = contact.rigid_modes.len();
+        let pts = &contact.points;
+        let area: Vec<f64> = pts.weight.iter().map(|w| w * contact.thickness).collect();
+        let penalty_compliance: Vec<f64> = match method {
+            Method::Penalty { stiffness } => area.iter().map(|a| 1.0 / (stiffness * a)).collect(),
+            _ => vec![0.0; n],
+        };
+        let make_a = |s: f64| {
+            let mut a: Vec<f64> = contact.a_nn.iter().zip(&contact.a_nt).map(|(nn, nt)| nn - s * contact.friction * nt).collect();
+            for i in 0..n {
+                a[i * n + i] += penalty_compliance[i];
+            }
+            a
+        };
+        let mut r = vec![0.0; n * m];
+        let make_e = |s: f64| {
+            let mut e = vec![0.0; m * n];
+            for k in 0..m {
+                for j in 0..n {
+                    let phi = contact.rigid_modes[k][j];
+                    let dir = [-pts.normal[j][0] + s * contact.friction * pts.tangent[j][0], -pts.normal[j][1] + s * contact.friction * pts.tangent[j][1]];
+                    e[k * n + j] = phi[0] * dir[0] + phi[1] * dir[1];
+                }
+            }
+            e
+        };
+        for i in 0..n {
+            for k in 0..m {
+                let phi = contact.rigid_modes[k][i];
+                r[i * m + k] = -(pts.normal[i][0] * phi[0] + pts.normal[i][1] * phi[1]);
+            }
+        }
+        let gap_to_pressure = (0..n).map(|i| 1.0 / (contact.a_nn[i * n + i] * area[i])).collect();
+        let cached = || Cached { active: vec![], lu: DenseLu::default(), valid: false };
+        ContactSolver {
+            n,
+            m,
+            method,
+            a: [make_a(1.0), make_a(-1.0)],
+            e: [make_e(1.0), make_e(-1.0)],
+            r,
+            load: contact.plate_load.clone(),
+            gap_to_pressure,
+            penalty_compliance,
+            area,
+            cache: [cached(), cached()],
+            rhs: Vec::with_capacity(n + m),
+            scratch: vec![0.0; n + m],
+            index: Vec::with_capacity(n),
+            max_iterations: 30 + n,
+        }
+    }
+
+    /// Number of contact points.
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
+    /// Whether the problem has no contact points.
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// Solve for initial gap `gap` (mm, one per point) in sliding direction `direction`,
+    /// writing into `out` (resized as needed; no allocation once sized).
+    pub fn solve_into(&mut self, gap: &[f64], direction: Direction, out: &mut ContactSolution) -> SolveInfo {
+        let (n, m) = (self.n, self.m);
+        out.pressure.resize(n, 0.0);
+        out.force.resize(n, 0.0);
+        out.gap.resize(n, 0.0);
+        out.rigid.resize(m, 0.0);
+        out.active.resize(n, true);
+        let mut info = SolveInfo { status: Status::Failed, iterations: 0, factorisations: 0, lemke_pivots: 0, complementarity: f64::INFINITY, equilibrium: f64::INFINITY };
+        if self.method != Method::Lemke && self.active_set(gap, direction, out, &mut info) {
+            info.status = Status::Solved;
+        } else {
+            self.lemke_solve(gap, direction, out, &mut info);
+        }
+        self.finish(gap, direction, out, &mut info);
+        info
+    }
+
+    /// Convenience wrapper of [`ContactSolver::solve_into`] that allocates the solution.
+    pub fn solve(&mut self, gap: &[f64], direction: Direction) -> (ContactSolution, SolveInfo) {
+        let mut out = ContactSolution::default();
+        let info = self.solve_into(gap, direction, &mut out);
+        (out, info)
+    }
+
+    fn active_set(&mut self, gap: &[f64], direction: Direction, out: &mut ContactSolution, info: &mut SolveInfo) -> bool {
+        let (n, m) = (self.n, self.m);
+        let dir = direction.index();
+        if self.cache[dir].active.len() != n {
+            self.cache[dir].active = vec![true; n];
+            self.cache[dir].valid = false;
+        }
+        out.active.copy_from_slice(&self.cache[dir].active);
+        for _ in 0..self.max_iterations {
+            info.iterations += 1;
+            if !self.cache[dir].valid || self.cache[dir].active != out.active {
+                self.factorise(dir, &out.active.clone());
+                info.factorisations += 1;
+                if !self.cache[dir].valid {
+                    return false;
+                }
+            }
+            // Right-hand side [−g_A; −L] and solve.
+            self.index.clear();
+            self.index.extend((0..n).filter(|&i| out.active[i]));
+            self.rhs.clear();
+            self.rhs.extend(self.index.iter().map(|&i| -gap[i]));
+            self.rhs.extend(self.load.iter().map(|l| -l));
+            let size = self.index.len() + m;
+            self.cache[dir].lu.solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
+            if self.rhs.iter().any(|v| !v.is_finite()) {
+                return false;
+            }
+            out.force.iter_mut().for_each(|f| *f = 0.0);
+            for (k, &i) in self.index.iter().enumerate() {
+                out.force[i] = self.rhs[k];
+            }
+            out.rigid.copy_from_slice(&self.rhs[self.index.len()..size]);
+            self.compute_gap(gap, dir, out);
+            let force_scale = out.force.iter().fold(0.0f64, |a, f| a.max(f.abs()));
+            let mut changed = false;
+            for i in 0..n {
+                // Keep a point whose force is not negative; add one that penetrates (the gap is
+                // compared as a force, d/A_ii, so that both tests share one scale).
+                let tolerance = 1e-13 * force_scale.max(1e-300);
+                let now = if out.active[i] { out.force[i] >= -tolerance } else { out.gap[i] * self.gap_to_pressure[i] * self.area[i] < -tolerance };
+                changed |= now != out.active[i];
+                out.active[i] = now;
+            }
+            if !changed {
+                self.cache[dir].active.copy_from_slice(&out.active);
+                return true;
+            }
+        }
+        false
+    }
+
+    /// Build and factorise the reduced system [A_AA R_A; E_A 0] for active set `active`.
+    fn factorise(&mut self, dir: usize, active: &[bool]) {
+        let (n, m) = (self.n, self.m);
+        self.index.clear();
+        self.index.extend((0..n).filter(|&i| active[i]));
+        let na = self.index.len();
+        let size = na + m;
+        let (a, e, r) = (&self.a[dir], &self.e[dir], &self.r);
+        let cache = &mut self.cache[dir];
+        let mat = cache.lu.storage(size);
+        for (row, &i) in self.index.iter().enumerate() {
+            for (col, &j) in self.index.iter().enumerate() {
+                mat[row * size + col] = a[i * n + j];
+            }
+            for k in 0..m {
+                mat[row * size + na + k] = r[i * m + k];
+            }
+        }
+        for k in 0..m {
+            for (col, &j) in self.index.iter().enumerate() {
+                mat[(na + k) * size + col] = e[k * n + j];
+            }
+        }
+        cache.valid = cache.lu.factor_in_place();
+        cache.active.clear();
+        cache.active.extend_from_slice(active);
+    }
+
+    /// d = A_s P + R λ + g (the penalty compliance excluded: d is the true gap).
+    fn compute_gap(&self, gap: &[f64], dir: usize, out: &mut ContactSolution) {
+        let (n, m) = (self.n, self.m);
+        let a = &self.a[dir];
+        for i in 0..n {
+            let row = &a[i * n..(i + 1) * n];
+            let mut d = gap[i] - self.penalty_compliance[i] * out.force[i];
+            d += row.iter().zip(&out.force).map(|(x, y)| x * y).sum::<f64>();
+            for k in 0..m {
+                d += self.r[i * m + k] * out.rigid[k];
+            }
+            out.gap[i] = d;
+        }
+    }
+
+    fn lemke_solve(&mut self, gap: &[f64], direction: Direction, out: &mut ContactSolution, info: &mut SolveInfo) {
+        // z = (P, λ⁺, λ⁻); M = [[A, R, −R], [−E, 0, 0], [E, 0, 0]], q = [g, −L, L]: with E = Rᵀ
+        // (no friction) M is positive semi-definite, so Lemke's method finds the solution.
+        let (n, m) = (self.n, self.m);
+        let dir = direction.index();
+        let size = n + 2 * m;
+        let mut mm = vec![0.0; size * size];
+        let mut q = vec![0.0; size];
+        for i in 0..n {
+            mm[i * size..i * size + n].copy_from_slice(&self.a[dir][i * n..(i + 1) * n]);
+            for k in 0..m {
+                mm[i * size + n + k] = self.r[i * m + k];
+                mm[i * size + n + m + k] = -self.r[i * m + k];
+            }
+            q[i] = gap[i];
+        }
+        for k in 0..m {
+            for j in 0..n {
+                mm[(n + k) * size + j] = -self.e[dir][k * n + j];
+                mm[(n + m + k) * size + j] = self.e[dir][k * n + j];
+            }
+            q[n + k] = -self.load[k];
+            q[n + m + k] = self.load[k];
+        }
+        match lemke(&mm, &q, 50 * size) {
+            Ok(sol) => {
+                info.lemke_pivots = sol.pivots;
+                info.status = Status::Solved;
+                out.force.copy_from_slice(&sol.z[..n]);
+                for k in 0..m {
+                    out.rigid[k] = sol.z[n + k] - sol.z[n + m + k];
+                }
+                for i in 0..n {
+                    out.active[i] = out.force[i] > 0.0;
+                }
+                self.cache[dir].active.copy_from_slice(&out.active);
+                self.cache[dir].valid = false;
+            }
+            Err(_) => info.status = Status::Failed,
+        }
+        self.compute_gap(gap, dir, out);
+    }
+
+    fn finish(&self, gap: &[f64], direction: Direction, out: &mut ContactSolution, info: &mut SolveInfo) {
+        let _ = gap;
+        let (n, m) = (self.n, self.m);
+        for i in 0..n {
+            out.pressure[i] = out.force[i] / self.area[i];
+        }
+        let peak = out.pressure.iter().fold(0.0f64, |a, p| a.max(p.abs())).max(1e-300);
+        let mut comp = 0.0f64;
+        for i in 0..n {
+            let d = out.gap[i] + self.penalty_compliance[i] * out.force[i];
+            comp = comp.max(out.pressure[i].min(d * self.gap_to_pressure[i]).abs());
+        }
+        info.complementarity = comp / peak;
+        let e = &self.e[direction.index()];
+        let mut eq = 0.0f64;
+        let mut scale = 0.0f64;
+        for k in 0..m {
+            let s: f64 = (0..n).map(|j| e[k * n + j] * out.force[j]).sum();
+            eq = eq.max((s + self.load[k]).abs());
+            scale = scale.max(self.load[k].abs()).max((0..n).map(|j| (e[k * n + j] * out.force[j]).abs()).sum::<f64>());
+        }
+        info.equilibrium = if m == 0 { 0.0 } else { eq / scale.max(1e-300) };
+    }
+}

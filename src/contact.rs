@@ -1,0 +1,357 @@
+//! Contact geometry and condensation: the contact points on body 1, their partners on body 2,
+//! the rigid loading plate, and the flexibility (Green) matrices that reduce both finite
+//! element models to the contact points once and for all.
+//!
+//! Sign conventions (paper eq. 2–3, 42): n_c is body 1's outward normal (into body 2), τ is n_c
+//! turned by +90° (τ = +e_x under a flat punch). The force of body 2 on body 1 at point i is
+//! F_i = P_i (−n_c + s μ τ), P_i = p_i w_i t ≥ 0 (N), s = ±1 the half-cycle sign. The gap is
+//! d = u_n⁽²⁾ − u_n⁽¹⁾ + g, which condenses to d = A_s P + R λ + g with
+//! A_s = A_nn − s μ A_nt, A_nn(i,j) = n_iᵀ(G¹+G²)_ij n_j, A_nt(i,j) = n_iᵀ(G¹+G²)_ij τ_j.
+//! Body 1 = rigid plate motion Σ λ_k φ_k + elastic part with the plate edge clamped; the plate's
+//! equilibrium (paper eq. 8) is E P + L = 0 with E(k,j) = φ_k(x_j)·(−n_j + s μ τ_j).
+
+use crate::basis::shape_1d;
+use crate::elasticity::ElasticBody;
+use crate::geometry::Point;
+use crate::loads::trace_dofs;
+use crate::problem::{Problem, ProblemError};
+use crate::quadrature::gauss_lobatto;
+use faer::Mat;
+use serde::Deserialize;
+
+/// `[contact]` section of a problem file.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ContactSpec {
+    /// Body 1 (the punch, whose contact edge carries the contact points).
+    pub body: String,
+    /// Body 1's contact edge.
+    pub edge: String,
+    /// Body 2.
+    pub target_body: String,
+    /// Body 2's contact edge.
+    pub target_edge: String,
+    /// Coulomb friction coefficient μ (full slip), ≥ 0.
+    #[serde(default)]
+    pub friction: f64,
+    /// Sliding direction of the first solve, "+" or "-" (friction on body 1 is s μ p τ).
+    #[serde(default = "plus")]
+    pub direction: String,
+    /// "active_set" (default; Lemke fallback), "lemke" or "penalty".
+    #[serde(default = "active_set")]
+    pub method: String,
+    /// Penalty parameter c_n (MPa/mm) for method = "penalty".
+    pub penalty: Option<f64>,
+    /// Optional circular initial shape of body 1: gap g = R − √(R² − (x − x₀)²).
+    pub initial_shape: Option<CircleShape>,
+}
+
+/// A circular initial gap (a cylinder of radius `radius` mm touching at x = `center_x`).
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CircleShape {
+    /// Radius R, mm.
+    pub radius: f64,
+    /// x₀ of the lowest point, mm.
+    pub center_x: f64,
+}
+
+fn plus() -> String {
+    "+".into()
+}
+fn active_set() -> String {
+    "active_set".into()
+}
+
+/// `[plate]`: the rigid loading plate clamped to an edge of body 1.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlateSpec {
+    /// Edge of body 1 clamped to the plate; tractions on it load the plate.
+    pub edge: String,
+    /// "fixed", "vertical" (λ_F) or "vertical_rotation" (λ_F, λ_M about `pin`).
+    pub motion: String,
+    /// Pin [x, z] (mm), needed for rotation; moments are taken about it.
+    pub pin: Option<Point>,
+}
+
+/// Contact points of body 1 with their partners on body 2.
+#[derive(Clone, Debug)]
+pub struct ContactPoints {
+    /// Coordinates [x, z] of the points on body 1, mm, ordered along the edge (x rising).
+    pub x: Vec<Point>,
+    /// Integration weight of each point (Lobatto weight × edge Jacobian), mm.
+    pub weight: Vec<f64>,
+    /// Unit normal n_c (into body 2).
+    pub normal: Vec<Point>,
+    /// Unit tangent τ = n_c turned by +90°.
+    pub tangent: Vec<Point>,
+    /// Initial geometric gap along n_c plus any initial shape, mm.
+    pub initial_gap: Vec<f64>,
+}
+
+/// One point's displacement as a combination of global dofs: (x dof, z dof, coefficient).
+type Trace = Vec<([usize; 2], f64)>;
+
+/// The contact problem condensed onto the contact points.
+#[derive(Clone, Debug)]
+pub struct CondensedContact {
+    /// Geometry of the contact points.
+    pub points: ContactPoints,
+    /// Thickness t, mm.
+    pub thickness: f64,
+    /// Friction coefficient μ.
+    pub friction: f64,
+    /// n_iᵀ G n_j, mm/N (N × N, row-major).
+    pub a_nn: Vec<f64>,
+    /// n_iᵀ G τ_j, mm/N (N × N, row-major).
+    pub a_nt: Vec<f64>,
+    /// Rigid modes: φ_k at each point (k-major: phi[k][i]).
+    pub rigid_modes: Vec<Vec<Point>>,
+    /// Names of the rigid unknowns ("lambda_F" mm, "lambda_M" rad).
+    pub rigid_names: Vec<&'static str>,
+    /// Generalised plate load L_k (N, N·mm).
+    pub plate_load: Vec<f64>,
+    /// Resultant plate force [F_x, F_z] (N) and moment about the pin (N·mm).
+    pub plate_resultant: (Point, f64),
+}
+
+fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize, bool)> {
+    // Order the element edges end to end; `bool` = traverse with t decreasing.
+    let ends = |&(e, l): &(usize, usize)| {
+        let (a, b) = crate::mesh::EDGE_ENDPOINTS[l];
+        (body.mesh.elements[e].vertices[a], body.mesh.elements[e].vertices[b])
+    };
+    let mut left: Vec<(usize, usize)> = edges.to_vec();
+    let mut chain: Vec<(usize, usize, bool)> = Vec::new();
+    // Start at an edge whose start vertex is no other edge's vertex (an open end).
+    let count = |v: usize| edges.iter().filter(|e| ends(e).0 == v || ends(e).1 == v).count();
+    let start = left.iter().position(|e| count(ends(e).0) == 1 || count(ends(e).1) == 1).unwrap_or(0);
+    let first = left.remove(start);
+    let (a, b) = ends(&first);
+    let reversed = count(a) != 1 && count(b) == 1;
+    chain.push((first.0, first.1, reversed));
+    let mut tip = if reversed { a } else { b };
+    while !left.is_empty() {
+        let Some(k) = left.iter().position(|e| ends(e).0 == tip || ends(e).1 == tip) else { break };
+        let next = left.remove(k);
+        let (a, b) = ends(&next);
+        let reversed = b == tip;
+        tip = if reversed { a } else { b };
+        chain.push((next.0, next.1, reversed));
+    }
+    chain
+}
+
+impl ContactPoints {
+    /// Gauss–Lobatto points (p + 1 per element edge, shared end points) along body 1's edge,
+    /// with one trace per point for body 1.
+    fn on_body1(body: &ElasticBody, edges: &[(usize, usize)], thickness_unused: f64) -> (ContactPoints, Vec<Trace>) {
+        let _ = thickness_unused;
+        let p = body.dofs.p;
+        let rule = gauss_lobatto(p + 1);
+        let chain = chain_edge(body, edges);
+        let mut pts = ContactPoints { x: vec![], weight: vec![], normal: vec![], tangent: vec![], initial_gap: vec![] };
+        let mut traces = Vec::new();
+        let mut values = vec![0.0; p + 1];
+        let mut derivs = vec![0.0; p + 1];
+        for (ci, &(element, local, reversed)) in chain.iter().enumerate() {
+            let dofs = trace_dofs(&body.dofs, &body.mesh, &body.basis, element, local);
+            for k in 0..rule.points.len() {
+                let t = if reversed { -rule.points[k] } else { rule.points[k] };
+                let (tan, normal) = body.mesh.edge_frame(element, local, t);
+                let w = rule.weights[k] * tan[0].hypot(tan[1]);
+                if k == 0 && ci > 0 {
+                    // Shared end point: its weight collects both elements' shares.
+                    *pts.weight.last_mut().unwrap() += w;
+                    continue;
+                }
+                shape_1d(p, t, &mut values, &mut derivs);
+                traces.push(dofs.iter().zip(&values).map(|(&(g, s), &v)| (g, s * v)).filter(|x| x.1 != 0.0).collect());
+                pts.x.push(body.mesh.point_on_edge(element, local, t));
+                pts.weight.push(w);
+                pts.normal.push(normal);
+                pts.tangent.push([-normal[1], normal[0]]);
+            }
+        }
+        if pts.x.len() > 1 && pts.x[0][0] > pts.x[pts.x.len() - 1][0] {
+            for v in [&mut pts.x, &mut pts.normal, &mut pts.tangent] {
+                v.reverse();
+            }
+            pts.weight.reverse();
+            traces.reverse();
+        }
+        (pts, traces)
+    }
+}
+
+/// Find the point of body 2's edge on the line x + s n and return (s, trace).
+fn project_on_body2(body: &ElasticBody, edges: &[(usize, usize)], x: Point, n: Point) -> Option<(f64, Trace)> {
+    let p = body.dofs.p;
+    let mut best: Option<(f64, usize, usize, f64)> = None;
+    for &(element, local) in edges {
+        // Signed distance of edge point y(t) from the normal line: (y − x)·τ, τ ⟂ n; bisection.
+        let side = |t: f64| {
+            let y = body.mesh.point_on_edge(element, local, t);
+            (y[0] - x[0]) * (-n[1]) + (y[1] - x[1]) * n[0]
+        };
+        let (fa, fb) = (side(-1.0), side(1.0));
+        let scale = 1e-10 * (1.0 + x[0].abs() + x[1].abs());
+        let t = if fa.abs() <= scale {
+            -1.0
+        } else if fb.abs() <= scale {
+            1.0
+        } else if fa * fb < 0.0 {
+            let (mut lo, mut hi) = (-1.0, 1.0);
+            for _ in 0..80 {
+                let mid = 0.5 * (lo + hi);
+                if (side(mid) < 0.0) == (fa < 0.0) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            0.5 * (lo + hi)
+        } else {
+            continue;
+        };
+        let y = body.mesh.point_on_edge(element, local, t);
+        let s = (y[0] - x[0]) * n[0] + (y[1] - x[1]) * n[1];
+        if best.is_none_or(|b| s.abs() < b.0.abs()) {
+            best = Some((s, element, local, t));
+        }
+    }
+    let (s, element, local, t) = best?;
+    let dofs = trace_dofs(&body.dofs, &body.mesh, &body.basis, element, local);
+    let mut values = vec![0.0; p + 1];
+    let mut derivs = vec![0.0; p + 1];
+    shape_1d(p, t, &mut values, &mut derivs);
+    Some((s, dofs.iter().zip(&values).map(|(&(g, sg), &v)| (g, sg * v)).filter(|x| x.1 != 0.0).collect()))
+}
+
+/// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces.
+fn flexibility(body: &ElasticBody, traces: &[Trace]) -> Mat<f64> {
+    let n = traces.len();
+    let n_dofs = body.dofs.n_dofs();
+    let mut rhs = Mat::<f64>::zeros(n_dofs, 2 * n);
+    for (i, tr) in traces.iter().enumerate() {
+        for &(g, coef) in tr {
+            for c in 0..2 {
+                rhs[(g[c], 2 * i + c)] += coef;
+            }
+        }
+    }
+    body.solve_in_place(&mut rhs);
+    Mat::from_fn(2 * n, 2 * n, |r, col| {
+        let (i, c) = (r / 2, r % 2);
+        traces[i].iter().map(|&(g, coef)| coef * rhs[(g[c], col)]).sum()
+    })
+}
+
+impl CondensedContact {
+    /// Build both bodies, condense them onto the contact points and evaluate the plate load.
+    /// Returns the condensed problem and the two factorised bodies (for post-processing).
+    pub fn build(problem: &Problem) -> Result<(CondensedContact, ElasticBody, ElasticBody), ProblemError> {
+        let c = problem.spec.contact.as_ref().ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
+        if !(c.friction.is_finite() && c.friction >= 0.0) {
+            return Err(problem.error("contact.friction", format!("must be ≥ 0, got {}", c.friction)));
+        }
+        let b1 = problem.body_index(&c.body).map_err(|_| problem.error("contact.body", format!("no body named \"{}\"", c.body)))?;
+        let b2 = problem.body_index(&c.target_body).map_err(|_| problem.error("contact.target_body", format!("no body named \"{}\"", c.target_body)))?;
+        if b1 == b2 {
+            return Err(problem.error("contact.target_body", "must differ from contact.body"));
+        }
+        let plate = problem.spec.plate.clone();
+        let clamped: Vec<&str> = plate.iter().map(|p| p.edge.as_str()).collect();
+        let body1 = problem.elastic_body(b1, &clamped)?;
+        let body2 = problem.elastic_body(b2, &[])?;
+        let edge1 = problem.named_edge(&body1.mesh, b1, &c.edge, "contact.edge")?.to_vec();
+        let edge2 = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?.to_vec();
+        let t = problem.analysis.thickness();
+        let (mut points, traces1) = ContactPoints::on_body1(&body1, &edge1, t);
+        let mut traces2 = Vec::with_capacity(points.x.len());
+        for i in 0..points.x.len() {
+            let (s, tr) = project_on_body2(&body2, &edge2, points.x[i], points.normal[i]).ok_or_else(|| {
+                problem.error("contact.target_edge", format!("contact point ({:.4}, {:.4}) of body 1 has no partner on \"{}\" along its normal", points.x[i][0], points.x[i][1], c.target_edge))
+            })?;
+            let shape = c.initial_shape.map_or(0.0, |sh| {
+                let dx = points.x[i][0] - sh.center_x;
+                sh.radius - (sh.radius * sh.radius - dx * dx).max(0.0).sqrt()
+            });
+            points.initial_gap.push(s + shape);
+            traces2.push(tr);
+        }
+        let g1 = flexibility(&body1, &traces1);
+        let g2 = flexibility(&body2, &traces2);
+        let n = points.x.len();
+        let mut a_nn = vec![0.0; n * n];
+        let mut a_nt = vec![0.0; n * n];
+        for i in 0..n {
+            for j in 0..n {
+                let block = |a: usize, b: usize| g1[(2 * i + a, 2 * j + b)] + g2[(2 * i + a, 2 * j + b)];
+                let (ni, nj, tj) = (points.normal[i], points.normal[j], points.tangent[j]);
+                let gn = [block(0, 0) * nj[0] + block(0, 1) * nj[1], block(1, 0) * nj[0] + block(1, 1) * nj[1]];
+                let gt = [block(0, 0) * tj[0] + block(0, 1) * tj[1], block(1, 0) * tj[0] + block(1, 1) * tj[1]];
+                a_nn[i * n + j] = ni[0] * gn[0] + ni[1] * gn[1];
+                a_nt[i * n + j] = ni[0] * gt[0] + ni[1] * gt[1];
+            }
+        }
+        let (rigid_modes, rigid_names, plate_load, plate_resultant) = match &plate {
+            None => (vec![], vec![], vec![], ([0.0; 2], 0.0)),
+            Some(pl) => plate_modes(problem, b1, &body1, pl, &points)?,
+        };
+        let contact = CondensedContact { points, thickness: t, friction: c.friction, a_nn, a_nt, rigid_modes, rigid_names, plate_load, plate_resultant };
+        Ok((contact, body1, body2))
+    }
+
+    /// Number of contact points N.
+    pub fn len(&self) -> usize {
+        self.points.x.len()
+    }
+
+    /// Whether there are no contact points.
+    pub fn is_empty(&self) -> bool {
+        self.points.x.is_empty()
+    }
+}
+
+type PlateModes = (Vec<Vec<Point>>, Vec<&'static str>, Vec<f64>, (Point, f64));
+
+fn plate_modes(problem: &Problem, b1: usize, body1: &ElasticBody, pl: &PlateSpec, points: &ContactPoints) -> Result<PlateModes, ProblemError> {
+    let plate_edges = problem.named_edge(&body1.mesh, b1, &pl.edge, "plate.edge")?;
+    let pin = match (pl.motion.as_str(), pl.pin) {
+        ("vertical_rotation", None) => return Err(problem.error("plate.pin", "rotation needs a pin [x, z]")),
+        (_, Some(p)) => p,
+        (_, None) => {
+            // Moments are reported about the plate edge's mid point when no pin is given.
+            let (e, l) = plate_edges[plate_edges.len() / 2];
+            body1.mesh.point_on_edge(e, l, 0.0)
+        }
+    };
+    let translation = |_: Point| [0.0, -1.0];
+    let rotation = move |x: Point| [x[1] - pin[1], -(x[0] - pin[0])];
+    let modes: Vec<(&'static str, Box<dyn Fn(Point) -> Point>)> = match pl.motion.as_str() {
+        "fixed" => vec![],
+        "vertical" => vec![("lambda_F", Box::new(translation))],
+        "vertical_rotation" => vec![("lambda_F", Box::new(translation)), ("lambda_M", Box::new(rotation))],
+        other => return Err(problem.error("plate.motion", format!("must be \"fixed\", \"vertical\" or \"vertical_rotation\", got \"{other}\""))),
+    };
+    let mut force = [0.0; 2];
+    let mut moment = 0.0;
+    let mut load = vec![0.0; modes.len()];
+    let t = problem.analysis.thickness();
+    for tr in problem.tractions(b1)?.iter().filter(|tr| tr.edge == pl.edge) {
+        tr.for_each_point(&body1.mesh, plate_edges, body1.dofs.p, t, |_, _, _, x, trac, w| {
+            force[0] += trac[0] * w;
+            force[1] += trac[1] * w;
+            moment += ((x[1] - pin[1]) * trac[0] - (x[0] - pin[0]) * trac[1]) * w;
+            for (k, (_, phi)) in modes.iter().enumerate() {
+                let f = phi(x);
+                load[k] += (trac[0] * f[0] + trac[1] * f[1]) * w;
+            }
+        });
+    }
+    let names = modes.iter().map(|m| m.0).collect();
+    let phis = modes.iter().map(|(_, phi)| points.x.iter().map(|&x| phi(x)).collect()).collect();
+    Ok((phis, names, load, (force, moment)))
+}

@@ -1,0 +1,162 @@
+//! Global numbering of the boundary (vertex and edge) degrees of freedom and the sparsity
+//! pattern of the condensed stiffness matrix.
+//!
+//! Internal modes are condensed element by element and never numbered globally. The remaining
+//! unknowns belong to *entities*: a vertex carries 2 dofs (u_x, u_z), an edge 2(p−1) (degree
+//! 2..=p, each u_x then u_z). An entity's dofs are consecutive, so every pair of neighbouring
+//! entities owns a dense block of the matrix: assembly adds whole blocks, no per-entry search.
+
+use crate::mesh::{Mesh, EDGE_ENDPOINTS};
+
+/// Global numbering of the boundary dofs of one body.
+#[derive(Clone, Debug)]
+pub struct DofMap {
+    /// Polynomial degree p.
+    pub p: usize,
+    /// First dof of each entity (vertices first, then edges); last entry = number of dofs.
+    pub entity_offset: Vec<usize>,
+    /// Number of vertices (entity ids below it are vertices).
+    pub n_vertices: usize,
+}
+
+/// One element's boundary dofs in element order (mode-major: mode a, component c → 2a + c).
+#[derive(Clone, Debug)]
+pub struct ElementDofs {
+    /// Global dof of each local boundary dof.
+    pub global: Vec<usize>,
+    /// ±1: odd edge modes flip when the local edge runs against the global orientation.
+    pub sign: Vec<f64>,
+    /// The element's 8 entities: 4 vertices, then the 4 edges (as entity ids).
+    pub entities: [usize; 8],
+}
+
+impl DofMap {
+    /// Number the dofs of `mesh` at degree `p`.
+    pub fn new(mesh: &Mesh, p: usize) -> DofMap {
+        let mut entity_offset = Vec::with_capacity(mesh.vertices.len() + mesh.edges.len() + 1);
+        let mut next = 0;
+        for _ in &mesh.vertices {
+            entity_offset.push(next);
+            next += 2;
+        }
+        for _ in &mesh.edges {
+            entity_offset.push(next);
+            next += 2 * (p - 1);
+        }
+        entity_offset.push(next);
+        DofMap { p, entity_offset, n_vertices: mesh.vertices.len() }
+    }
+
+    /// Total number of global (boundary) dofs.
+    pub fn n_dofs(&self) -> usize {
+        *self.entity_offset.last().unwrap()
+    }
+
+    /// Number of entities (vertices + edges).
+    pub fn n_entities(&self) -> usize {
+        self.entity_offset.len() - 1
+    }
+
+    /// Global dof of component `c` (0 = x, 1 = z) at vertex `v`.
+    pub fn vertex_dof(&self, v: usize, c: usize) -> usize {
+        self.entity_offset[v] + c
+    }
+
+    /// Global dof of component `c` of the degree-`k` mode (2 ≤ k ≤ p) on global edge `e`.
+    pub fn edge_dof(&self, e: usize, k: usize, c: usize) -> usize {
+        self.entity_offset[self.n_vertices + e] + 2 * (k - 2) + c
+    }
+
+    /// Boundary dofs of element `element`, in the order of [`crate::basis::QuadBasis`] modes.
+    pub fn element_dofs(&self, mesh: &Mesh, element: usize) -> ElementDofs {
+        let el = &mesh.elements[element];
+        let p = self.p;
+        let mut global = Vec::with_capacity(8 * p);
+        let mut sign = Vec::with_capacity(8 * p);
+        for &v in &el.vertices {
+            for c in 0..2 {
+                global.push(self.vertex_dof(v, c));
+                sign.push(1.0);
+            }
+        }
+        for (local, &edge) in el.edges.iter().enumerate() {
+            let (a, b) = EDGE_ENDPOINTS[local];
+            let reversed = el.vertices[a] > el.vertices[b];
+            for k in 2..=p {
+                let s = if reversed && k % 2 == 1 { -1.0 } else { 1.0 };
+                for c in 0..2 {
+                    global.push(self.edge_dof(edge, k, c));
+                    sign.push(s);
+                }
+            }
+        }
+        let mut entities = [0; 8];
+        entities[..4].copy_from_slice(&el.vertices);
+        for e in 0..4 {
+            entities[4 + e] = self.n_vertices + el.edges[e];
+        }
+        ElementDofs { global, sign, entities }
+    }
+}
+
+/// Compressed-column pattern of the (full, symmetric) condensed stiffness, built entity-wise.
+#[derive(Clone, Debug)]
+pub struct Pattern {
+    /// Column pointers (length n + 1).
+    pub col_ptr: Vec<usize>,
+    /// Row indices, sorted within each column.
+    pub row_idx: Vec<usize>,
+    /// For each entity, its neighbour entities (sorted, itself included).
+    pub neighbours: Vec<Vec<usize>>,
+    /// For each entity, the row offset of each neighbour's block within its columns.
+    pub neighbour_row_offset: Vec<Vec<usize>>,
+}
+
+impl Pattern {
+    /// Pattern for all elements of `mesh` numbered by `dofs`.
+    pub fn new(mesh: &Mesh, dofs: &DofMap) -> Pattern {
+        let n_entities = dofs.n_entities();
+        let mut neighbours: Vec<Vec<usize>> = vec![Vec::new(); n_entities];
+        for element in 0..mesh.elements.len() {
+            let entities = dofs.element_dofs(mesh, element).entities;
+            for &a in &entities {
+                neighbours[a].extend_from_slice(&entities);
+            }
+        }
+        let size = |e: usize| dofs.entity_offset[e + 1] - dofs.entity_offset[e];
+        let mut neighbour_row_offset = Vec::with_capacity(n_entities);
+        for list in neighbours.iter_mut() {
+            list.sort_unstable();
+            list.dedup();
+            let mut offsets = Vec::with_capacity(list.len());
+            let mut acc = 0;
+            for &f in list.iter() {
+                offsets.push(acc);
+                acc += size(f);
+            }
+            neighbour_row_offset.push(offsets);
+        }
+        let n = dofs.n_dofs();
+        let mut col_ptr = Vec::with_capacity(n + 1);
+        let mut row_idx = Vec::new();
+        col_ptr.push(0);
+        for e in 0..n_entities {
+            for _ in 0..size(e) {
+                for &f in &neighbours[e] {
+                    row_idx.extend(dofs.entity_offset[f]..dofs.entity_offset[f + 1]);
+                }
+                col_ptr.push(row_idx.len());
+            }
+        }
+        Pattern { col_ptr, row_idx, neighbours, neighbour_row_offset }
+    }
+
+    /// Position in the value array of the first row of entity `row_entity` in column `col`
+    /// (a dof of entity `col_entity`).
+    pub fn block_start(&self, col: usize, col_entity: usize, row_entity: usize) -> usize {
+        let k = self.neighbours[col_entity]
+            .binary_search(&row_entity)
+            .expect("entities of one element are neighbours");
+        self.col_ptr[col] + self.neighbour_row_offset[col_entity][k]
+    }
+}

@@ -1,0 +1,205 @@
+//! The three jobs of the command line as library functions: a static elastic solve, one
+//! contact solve and a wear run. Each returns its results; [`crate::output`] writes them.
+
+use crate::complementarity::{ContactSolution, ContactSolver, Direction, Method, SolveInfo, Status};
+use crate::contact::CondensedContact;
+use crate::fields::strain_energy;
+use crate::output::{number, numbers};
+use crate::problem::{Problem, ProblemError};
+use crate::wear::{WearHistory, WearIntegrator};
+use serde_json::{json, Value};
+use std::time::Instant;
+
+/// Errors of a job: bad input, or a computation that could not be carried out.
+#[derive(Debug, thiserror::Error)]
+pub enum JobError {
+    /// The problem file is wrong.
+    #[error(transparent)]
+    Problem(#[from] ProblemError),
+}
+
+/// Static elastic solve of every body: dofs, strain energy and probe values.
+pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
+    let start = Instant::now();
+    let mut energy = 0.0;
+    let mut dofs = 0;
+    let mut condensed = 0;
+    let mut probes = serde_json::Map::new();
+    for b in 0..problem.spec.bodies.len() {
+        let body = problem.elastic_body(b, &[])?;
+        let load = problem.load_vector(b, &body, &[])?;
+        let u = body.solve(&load);
+        energy += strain_energy(&load, &u);
+        dofs += body.info.total_dofs;
+        condensed += body.info.condensed_dofs;
+        for (name, probe) in &problem.spec.probes {
+            if probe.body != body.name {
+                continue;
+            }
+            let v = body.values_at(&u, probe.at).ok_or_else(|| problem.error(format!("probes.{name}.at"), format!("({}, {}) is not inside body \"{}\"", probe.at[0], probe.at[1], probe.body)))?;
+            probes.insert(name.clone(), json!({ "displacement": numbers(&v.displacement), "stress": numbers(&v.stress), "strain": numbers(&v.strain) }));
+        }
+    }
+    Ok(json!({
+        "title": problem.spec.title,
+        "dofs": dofs,
+        "condensed_dofs": condensed,
+        "strain_energy": number(energy),
+        "probes": probes,
+        "seconds": start.elapsed().as_secs_f64(),
+    }))
+}
+
+/// The solver method named in the problem's `[contact]` section.
+pub fn method(problem: &Problem) -> Result<Method, ProblemError> {
+    let c = problem.spec.contact.as_ref().ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
+    match c.method.as_str() {
+        "active_set" => Ok(Method::ActiveSet),
+        "lemke" => Ok(Method::Lemke),
+        "penalty" => match c.penalty {
+            Some(k) if k.is_finite() && k > 0.0 => Ok(Method::Penalty { stiffness: k }),
+            other => Err(problem.error("contact.penalty", format!("method \"penalty\" needs penalty > 0 (MPa/mm), got {other:?}"))),
+        },
+        other => Err(problem.error("contact.method", format!("must be \"active_set\", \"lemke\" or \"penalty\", got \"{other}\""))),
+    }
+}
+
+/// The first sliding direction named in the problem.
+pub fn direction(problem: &Problem) -> Result<Direction, ProblemError> {
+    let c = problem.spec.contact.as_ref().ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
+    match c.direction.as_str() {
+        "+" => Ok(Direction::Plus),
+        "-" | "−" => Ok(Direction::Minus),
+        other => Err(problem.error("contact.direction", format!("must be \"+\" or \"-\", got \"{other}\""))),
+    }
+}
+
+/// Indices of the contact points nearest to the problem's probes on the contact body.
+pub fn contact_probes(problem: &Problem, contact: &CondensedContact) -> Vec<(String, usize)> {
+    let body = problem.spec.contact.as_ref().map(|c| c.body.clone()).unwrap_or_default();
+    problem
+        .spec
+        .probes
+        .iter()
+        .filter(|(_, p)| p.body == body)
+        .map(|(name, p)| {
+            let i = (0..contact.len()).min_by(|&i, &j| dist(contact.points.x[i], p.at).total_cmp(&dist(contact.points.x[j], p.at))).unwrap_or(0);
+            (name.clone(), i)
+        })
+        .collect()
+}
+
+fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+fn info_json(info: &SolveInfo) -> Value {
+    json!({
+        "status": if info.status == Status::Solved { "solved" } else { "failed" },
+        "iterations": info.iterations,
+        "factorisations": info.factorisations,
+        "lemke_pivots": info.lemke_pivots,
+        "complementarity": number(info.complementarity),
+        "equilibrium": number(info.equilibrium),
+    })
+}
+
+/// One contact solve of the initial configuration.
+pub fn contact(problem: &Problem) -> Result<(Value, CondensedContact, ContactSolution, SolveInfo), JobError> {
+    let start = Instant::now();
+    let (contact, _, _) = CondensedContact::build(problem)?;
+    let setup = start.elapsed().as_secs_f64();
+    let mut solver = ContactSolver::new(&contact, method(problem)?);
+    let (solution, info) = solver.solve(&contact.points.initial_gap, direction(problem)?);
+    let rigid: serde_json::Map<String, Value> = contact.rigid_names.iter().zip(&solution.rigid).map(|(n, v)| (n.to_string(), number(*v))).collect();
+    let probes: serde_json::Map<String, Value> = contact_probes(problem, &contact).into_iter().map(|(n, i)| (n, number(solution.pressure[i]))).collect();
+    let summary = json!({
+        "title": problem.spec.title,
+        "points": contact.len(),
+        "x": contact.points.x.iter().map(|p| number(p[0])).collect::<Vec<_>>(),
+        "z": contact.points.x.iter().map(|p| number(p[1])).collect::<Vec<_>>(),
+        "pressure": numbers(&solution.pressure),
+        "gap": numbers(&solution.gap),
+        "rigid": rigid,
+        "probes": probes,
+        "iterations": info.iterations,
+        "residuals": { "complementarity": number(info.complementarity), "equilibrium": number(info.equilibrium) },
+        "solve": info_json(&info),
+        "plate_force": numbers(&contact.plate_resultant.0),
+        "plate_moment": number(contact.plate_resultant.1),
+        "setup_seconds": setup,
+    });
+    if info.status == Status::Failed {
+        // Keep what was computed; the caller reports the failure.
+        return Ok((summary, contact, solution, info));
+    }
+    Ok((summary, contact, solution, info))
+}
+
+/// A finished wear run with its set-up.
+pub struct WearRun {
+    /// The condensed contact problem.
+    pub contact: CondensedContact,
+    /// Step history and final profiles.
+    pub history: WearHistory,
+    /// Probe names and their contact point indices.
+    pub probes: Vec<(String, usize)>,
+    /// Seconds spent on the FE set-up and condensation.
+    pub setup_seconds: f64,
+    /// Seconds spent integrating.
+    pub run_seconds: f64,
+}
+
+/// Run the wear integration of `problem` (optionally overriding the number of steps).
+pub fn wear(problem: &Problem, steps: Option<usize>, on_step: impl FnMut(&crate::wear::StepRecord)) -> Result<WearRun, JobError> {
+    let spec = problem.spec.wear.clone().ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
+    let mut spec = spec;
+    if let Some(n) = steps {
+        spec.steps = n;
+    }
+    let integrator = WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
+    let start = Instant::now();
+    let (contact, _, _) = CondensedContact::build(problem)?;
+    let mut solver = ContactSolver::new(&contact, method(problem)?);
+    let setup_seconds = start.elapsed().as_secs_f64();
+    let probes = contact_probes(problem, &contact);
+    let probe_index: Vec<usize> = probes.iter().map(|p| p.1).collect();
+    let start = Instant::now();
+    let history = integrator.run(&mut solver, &contact, &contact.points.initial_gap, &probe_index, on_step);
+    let run_seconds = start.elapsed().as_secs_f64();
+    Ok(WearRun { contact, history, probes, setup_seconds, run_seconds })
+}
+
+impl WearRun {
+    /// The summary JSON of the run.
+    pub fn summary(&self, problem: &Problem) -> Value {
+        let h = &self.history;
+        let steps: Vec<Value> = h
+            .steps
+            .iter()
+            .map(|s| {
+                let probes: serde_json::Map<String, Value> = self.probes.iter().zip(&s.probes).map(|((n, _), v)| (n.clone(), number(*v))).collect();
+                json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "k": s.k, "iterations": s.iterations, "criterion": number(s.criterion), "dissipation": number(s.dissipation), "delta_w": number(s.delta_w), "probes": probes })
+            })
+            .collect();
+        let p_sum: Vec<f64> = h.p_plus.iter().zip(&h.p_minus).map(|(a, b)| a + b).collect();
+        json!({
+            "title": problem.spec.title,
+            "points": self.contact.len(),
+            "steps": steps,
+            "final": {
+                "x": self.contact.points.x.iter().map(|p| number(p[0])).collect::<Vec<_>>(),
+                "p_plus": numbers(&h.p_plus),
+                "p_minus": numbers(&h.p_minus),
+                "p_sum": numbers(&p_sum),
+                "shape": numbers(&h.shape),
+            },
+            "snapshots": h.snapshots.iter().map(|s| json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "pressure": numbers(&s.pressure), "shape": numbers(&s.shape) })).collect::<Vec<_>>(),
+            "solves": h.solves,
+            "failed_solves": h.failed_solves,
+            "unconverged_steps": h.unconverged_steps,
+            "setup_seconds": self.setup_seconds,
+            "run_seconds": self.run_seconds,
+        })
+    }
+}

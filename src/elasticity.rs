@@ -1,0 +1,348 @@
+//! 2D linear elasticity with the p-version: element stiffness by tensor-product quadrature,
+//! static condensation of the internal modes, entity-block assembly and one sparse Cholesky
+//! factorisation that is kept for every later right-hand side.
+//!
+//! Element stiffness (strain vector ε = (ε_xx, ε_zz, γ_xz), σ = D ε, thickness t):
+//! K_ab = t ∫ B_aᵀ D B_b dA. With G_x[a, q] = ∂N_a/∂x · √(w_q det J_q t) (and G_z likewise) the
+//! four 2×2 blocks are K^xx = D₁₁ G_xG_xᵀ + D₃₃ G_zG_zᵀ, K^xz = D₁₂ G_xG_zᵀ + D₃₃ G_zG_xᵀ,
+//! K^zz = D₂₂ G_zG_zᵀ + D₃₃ G_xG_xᵀ: three dense products per element.
+
+use crate::basis::{QuadBasis, Space};
+use crate::dofs::{DofMap, Pattern};
+use crate::material::{Analysis, Material};
+use crate::mesh::Mesh;
+use crate::quadrature::gauss_legendre;
+use faer::linalg::solvers::Solve;
+use faer::sparse::{SparseColMat, SymbolicSparseColMat};
+use faer::{Mat, Side};
+use std::collections::HashMap;
+
+/// Errors of the elasticity stage.
+#[derive(Debug, thiserror::Error)]
+pub enum ElasticityError {
+    /// The stiffness matrix is not positive definite: the body can move as a rigid body.
+    #[error("the stiffness matrix of body '{body}' is singular: the supports do not prevent rigid-body motion")]
+    Singular { body: String },
+    /// An internal-mode block failed to factorise (a degenerate element).
+    #[error("element {element}: internal-mode stiffness is not positive definite")]
+    Internal { element: usize },
+}
+
+/// Discretisation settings of one body.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Discretisation {
+    /// Polynomial degree p ≥ 1 of every element.
+    pub p: usize,
+    /// Tensor-product or trunk space.
+    pub space: Space,
+}
+
+/// Dofs held at zero (supports), as (global dof) list.
+#[derive(Clone, Debug, Default)]
+pub struct Constraints {
+    /// Global dofs fixed at zero displacement.
+    pub fixed: Vec<usize>,
+}
+
+/// An element type after condensation: all elements with equal geometry (up to translation),
+/// material and quadrature share one.
+struct CondensedElement {
+    /// Condensed boundary stiffness S = K_bb − K_bi K_ii⁻¹ K_ib (N/mm), 8p × 8p.
+    condensed: Mat<f64>,
+    /// Recovery matrix R = K_ii⁻¹ K_ib: internal displacements are −R u_b.
+    recovery: Mat<f64>,
+}
+
+/// Timing and size figures of the set-up.
+#[derive(Clone, Debug, Default)]
+pub struct SetupInfo {
+    /// Unknowns before condensation (boundary + internal), including fixed ones.
+    pub total_dofs: usize,
+    /// Unknowns of the condensed global system.
+    pub condensed_dofs: usize,
+    /// Distinct element stiffness matrices actually computed.
+    pub distinct_elements: usize,
+    /// Non-zeros of the condensed matrix.
+    pub nonzeros: usize,
+}
+
+/// One elastic body, assembled, condensed and factorised: ready for any number of load cases.
+pub struct ElasticBody {
+    /// Body name (for messages).
+    pub name: String,
+    /// The mesh.
+    pub mesh: Mesh,
+    /// Materials indexed by the elements' `material`.
+    pub materials: Vec<Material>,
+    /// Plane stress or plane strain, with the thickness.
+    pub analysis: Analysis,
+    /// The shape functions.
+    pub basis: QuadBasis,
+    /// Global numbering of the boundary dofs.
+    pub dofs: DofMap,
+    element_type: Vec<usize>,
+    types: Vec<CondensedElement>,
+    fixed: Vec<bool>,
+    factor: faer::sparse::linalg::solvers::Llt<usize, f64>,
+    /// Size figures of the set-up.
+    pub info: SetupInfo,
+}
+
+/// The displacement field of a body: global boundary dofs plus recovered internal modes.
+#[derive(Clone, Debug)]
+pub struct Displacement {
+    /// Global boundary dofs (mm).
+    pub boundary: Vec<f64>,
+    /// Per element, all local mode coefficients (mode-major, 2a + c), mm.
+    pub local: Vec<Vec<f64>>,
+}
+
+fn quadrature_points(mesh: &Mesh, element: usize, p: usize) -> usize {
+    // Parallelogram maps make the integrand polynomial of degree 2p per direction: p + 1
+    // Gauss points are exact. Other maps are rational or transcendental: p + 3 points keep the
+    // quadrature error below the discretisation error for the meshes we ship (checked by the
+    // patch and Lamé tests).
+    let (j0, _) = mesh.jacobian(element, -1.0, -1.0);
+    let affine = [(1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (0.0, 0.0)].iter().all(|&(x, y)| {
+        let (j, _) = mesh.jacobian(element, x, y);
+        let scale = j0.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+        j.iter().flatten().zip(j0.iter().flatten()).all(|(a, b)| (a - b).abs() <= 1e-12 * scale)
+    });
+    if affine {
+        p + 1
+    } else {
+        p + 3
+    }
+}
+
+/// A key that is equal for elements whose maps agree up to a translation.
+fn geometry_key(mesh: &Mesh, element: usize, material: usize, nq: usize) -> Vec<i64> {
+    let origin = mesh.map(element, -1.0, -1.0);
+    let far = mesh.map(element, 1.0, 1.0);
+    let size = (far[0] - origin[0]).hypot(far[1] - origin[1]).max(1e-300);
+    let mut key = vec![material as i64, nq as i64];
+    for i in 0..5 {
+        for j in 0..5 {
+            let x = mesh.map(element, -1.0 + 0.5 * i as f64, -1.0 + 0.5 * j as f64);
+            for d in 0..2 {
+                key.push(((x[d] - origin[d]) / size * 1e10).round() as i64);
+            }
+            key.push((size * 1e6).round() as i64);
+        }
+    }
+    key
+}
+
+fn element_stiffness(
+    mesh: &Mesh,
+    element: usize,
+    basis: &QuadBasis,
+    material: &Material,
+    analysis: Analysis,
+    nq: usize,
+) -> Mat<f64> {
+    let rule = gauss_legendre(nq);
+    let tab = basis.tabulate(&rule.points, &rule.points);
+    let n = basis.n_modes();
+    let n_points = nq * nq;
+    let t = analysis.thickness();
+    let mut gx = Mat::<f64>::zeros(n, n_points);
+    let mut gz = Mat::<f64>::zeros(n, n_points);
+    for iy in 0..nq {
+        for ix in 0..nq {
+            let q = iy * nq + ix;
+            let (j, det) = mesh.jacobian(element, rule.points[ix], rule.points[iy]);
+            let scale = (rule.weights[ix] * rule.weights[iy] * det * t).sqrt();
+            // Rows of J⁻¹: ∂ξ/∂(x, z) and ∂η/∂(x, z).
+            let (dxi_dx, dxi_dz) = (j[1][1] / det, -j[0][1] / det);
+            let (deta_dx, deta_dz) = (-j[1][0] / det, j[0][0] / det);
+            for a in 0..n {
+                let (nxi, neta) = (tab.d_xi[a * n_points + q], tab.d_eta[a * n_points + q]);
+                gx[(a, q)] = (nxi * dxi_dx + neta * deta_dx) * scale;
+                gz[(a, q)] = (nxi * dxi_dz + neta * deta_dz) * scale;
+            }
+        }
+    }
+    let xx = &gx * gx.transpose();
+    let zz = &gz * gz.transpose();
+    let xz = &gx * gz.transpose();
+    let d = material.constitutive(analysis);
+    Mat::from_fn(2 * n, 2 * n, |r, c| {
+        let (a, ca, b, cb) = (r / 2, r % 2, c / 2, c % 2);
+        match (ca, cb) {
+            (0, 0) => d[0][0] * xx[(a, b)] + d[2][2] * zz[(a, b)],
+            (1, 1) => d[1][1] * zz[(a, b)] + d[2][2] * xx[(a, b)],
+            (0, 1) => d[0][1] * xz[(a, b)] + d[2][2] * xz[(b, a)],
+            _ => d[1][0] * xz[(b, a)] + d[2][2] * xz[(a, b)],
+        }
+    })
+}
+
+fn condense(k: &Mat<f64>, nb: usize, element: usize) -> Result<CondensedElement, ElasticityError> {
+    let n = k.nrows();
+    let ni = n - nb;
+    if ni == 0 {
+        return Ok(CondensedElement { condensed: k.clone(), recovery: Mat::zeros(0, nb) });
+    }
+    let kii = k.submatrix(nb, nb, ni, ni);
+    let kib = k.submatrix(nb, 0, ni, nb);
+    let llt = kii.llt(Side::Lower).map_err(|_| ElasticityError::Internal { element })?;
+    let recovery = llt.solve(kib);
+    let condensed = k.submatrix(0, 0, nb, nb) - kib.transpose() * &recovery;
+    Ok(CondensedElement { condensed, recovery })
+}
+
+impl ElasticBody {
+    /// Assemble, condense and factorise one body.
+    pub fn new(
+        name: &str,
+        mesh: Mesh,
+        materials: Vec<Material>,
+        analysis: Analysis,
+        discretisation: Discretisation,
+        constraints: &Constraints,
+    ) -> Result<ElasticBody, ElasticityError> {
+        let basis = QuadBasis::new(discretisation.p, discretisation.space);
+        let dofs = DofMap::new(&mesh, discretisation.p);
+        let nb = 2 * basis.n_boundary();
+        let mut cache: HashMap<Vec<i64>, usize> = HashMap::new();
+        let mut types = Vec::new();
+        let mut element_type = Vec::with_capacity(mesh.elements.len());
+        for element in 0..mesh.elements.len() {
+            let material = mesh.elements[element].material;
+            let nq = quadrature_points(&mesh, element, discretisation.p);
+            let key = geometry_key(&mesh, element, material, nq);
+            let id = match cache.get(&key) {
+                Some(&id) => id,
+                None => {
+                    let k = element_stiffness(&mesh, element, &basis, &materials[material], analysis, nq);
+                    types.push(condense(&k, nb, element)?);
+                    cache.insert(key, types.len() - 1);
+                    types.len() - 1
+                }
+            };
+            element_type.push(id);
+        }
+        let n = dofs.n_dofs();
+        let mut fixed = vec![false; n];
+        for &d in &constraints.fixed {
+            fixed[d] = true;
+        }
+        let pattern = Pattern::new(&mesh, &dofs);
+        let values = assemble(&mesh, &dofs, &pattern, &element_type, &types, &fixed);
+        let info = SetupInfo {
+            total_dofs: n + mesh.elements.len() * 2 * basis.n_internal(),
+            condensed_dofs: n,
+            distinct_elements: types.len(),
+            nonzeros: values.len(),
+        };
+        let symbolic = SymbolicSparseColMat::new_checked(n, n, pattern.col_ptr, None, pattern.row_idx);
+        let matrix = SparseColMat::new(symbolic, values);
+        let factor = matrix
+            .sp_cholesky(Side::Lower)
+            .map_err(|_| ElasticityError::Singular { body: name.to_string() })?;
+        Ok(ElasticBody {
+            name: name.to_string(),
+            mesh,
+            materials,
+            analysis,
+            basis,
+            dofs,
+            element_type,
+            types,
+            fixed,
+            factor,
+            info,
+        })
+    }
+
+    /// Solve K u = f in place for every column of `rhs` (global boundary dofs, N → mm).
+    /// Entries of `rhs` at fixed dofs are ignored (set to zero).
+    pub fn solve_in_place(&self, rhs: &mut Mat<f64>) {
+        for (d, &f) in self.fixed.iter().enumerate() {
+            if f {
+                for c in 0..rhs.ncols() {
+                    rhs[(d, c)] = 0.0;
+                }
+            }
+        }
+        self.factor.solve_in_place(rhs.as_mut());
+    }
+
+    /// Displacement field for the global load vector `load` (N, one entry per global dof).
+    pub fn solve(&self, load: &[f64]) -> Displacement {
+        let mut rhs = Mat::from_fn(load.len(), 1, |i, _| load[i]);
+        self.solve_in_place(&mut rhs);
+        let boundary: Vec<f64> = (0..load.len()).map(|i| rhs[(i, 0)]).collect();
+        self.recover(boundary)
+    }
+
+    /// Recover the internal modes of every element from the boundary dofs.
+    pub fn recover(&self, boundary: Vec<f64>) -> Displacement {
+        let nb = 2 * self.basis.n_boundary();
+        let local = (0..self.mesh.elements.len())
+            .map(|e| {
+                let ed = self.dofs.element_dofs(&self.mesh, e);
+                let mut u: Vec<f64> = ed.global.iter().zip(&ed.sign).map(|(&g, &s)| s * boundary[g]).collect();
+                let r = &self.types[self.element_type[e]].recovery;
+                for i in 0..r.nrows() {
+                    let mut acc = 0.0;
+                    for b in 0..nb {
+                        acc -= r[(i, b)] * u[b];
+                    }
+                    u.push(acc);
+                }
+                u
+            })
+            .collect();
+        Displacement { boundary, local }
+    }
+
+    /// Whether global dof `d` is held by a support.
+    pub fn is_fixed(&self, d: usize) -> bool {
+        self.fixed[d]
+    }
+}
+
+/// Add every element's condensed stiffness into the pattern's value array, block by block,
+/// then replace fixed rows and columns by the identity.
+fn assemble(
+    mesh: &Mesh,
+    dofs: &DofMap,
+    pattern: &Pattern,
+    element_type: &[usize],
+    types: &[CondensedElement],
+    fixed: &[bool],
+) -> Vec<f64> {
+    let mut values = vec![0.0; pattern.row_idx.len()];
+    let p = dofs.p;
+    // Local boundary dofs of each of the 8 entities: vertex k → 2 dofs at 2k; edge e → 2(p−1)
+    // dofs starting after the 8 vertex dofs.
+    let entity_local: Vec<std::ops::Range<usize>> = (0..8)
+        .map(|k| if k < 4 { 2 * k..2 * k + 2 } else { 8 + 2 * (p - 1) * (k - 4)..8 + 2 * (p - 1) * (k - 3) })
+        .collect();
+    for (element, &ty) in element_type.iter().enumerate() {
+        let ed = dofs.element_dofs(mesh, element);
+        let s = &types[ty].condensed;
+        for (cb, col_range) in entity_local.iter().enumerate() {
+            for (rb, row_range) in entity_local.iter().enumerate() {
+                for lc in col_range.clone() {
+                    let gc = ed.global[lc];
+                    let start = pattern.block_start(gc, ed.entities[cb], ed.entities[rb]);
+                    for (i, lr) in row_range.clone().enumerate() {
+                        values[start + i] += ed.sign[lr] * ed.sign[lc] * s[(lr, lc)];
+                    }
+                }
+            }
+        }
+    }
+    for col in 0..fixed.len() {
+        for k in pattern.col_ptr[col]..pattern.col_ptr[col + 1] {
+            let row = pattern.row_idx[k];
+            if fixed[col] || fixed[row] {
+                values[k] = if row == col { 1.0 } else { 0.0 };
+            }
+        }
+    }
+    values
+}

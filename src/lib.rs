@@ -1,0 +1,45 @@
+//! # wearfem
+//!
+//! Sliding wear of two elastic bodies in contact, after Páczelt & Mróz, *Analysis of steady
+//! wear processes for periodic sliding*: p-version finite elements, exact frictional contact on
+//! the condensed contact points, and the Archard-type wear rule integrated over thousands of
+//! half periods of reciprocating sliding.
+//!
+//! The modules form a pipeline; each uses only the ones above it:
+//!
+//! | stage | module | entry type |
+//! |---|---|---|
+//! | quadrature rules | [`quadrature`] | [`quadrature::Rule1d`] |
+//! | shape functions | [`basis`] | [`basis::QuadBasis`] |
+//! | exact geometry | [`geometry`] | [`geometry::Block`] |
+//! | mesh | [`mesh`] | [`mesh::Mesh`] |
+//! | materials | [`material`] | [`material::Material`] |
+//! | dof numbering | [`dofs`] | [`dofs::DofMap`] |
+//! | elasticity, condensation, factorisation | [`elasticity`] | [`elasticity::ElasticBody`] |
+//! | loads, post-processing | [`loads`], [`fields`] | [`loads::Traction`] |
+//! | problem files | [`problem`] | [`problem::Problem`] |
+//! | contact condensation | [`contact`] | [`contact::CondensedContact`] |
+//! | contact solve | [`complementarity`] | [`complementarity::ContactSolver`] |
+//! | wear integration | [`wear`] | [`wear::WearIntegrator`] |
+//! | output | [`output`] | [`output::write_json`] |
+//!
+//! Units everywhere: mm, N, MPa (N/mm²), s.
+
+pub mod quadrature;
+pub mod basis;
+pub mod geometry;
+pub mod mesh;
+pub mod material;
+pub mod dofs;
+pub mod elasticity;
+pub mod loads;
+pub mod fields;
+pub mod problem;
+pub mod dense;
+pub mod lemke;
+pub mod contact;
+pub mod complementarity;
+pub mod wear;
+pub mod examples;
+pub mod output;
+pub mod driver;

@@ -1,0 +1,159 @@
+//! Edge tractions: consistent load vectors, resultants and the edge traces of the shape
+//! functions (which the contact stage uses as well).
+
+use crate::basis::shape_1d;
+use crate::dofs::DofMap;
+use crate::geometry::Point;
+use crate::mesh::Mesh;
+use crate::quadrature::gauss_legendre;
+
+/// Part of an edge selected by a coordinate range: `axis` 0 = x, 1 = z; `range` in mm.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Window {
+    /// 0 for x, 1 for z.
+    pub axis: usize,
+    /// Lower and upper coordinate, mm.
+    pub range: [f64; 2],
+}
+
+/// A distributed load on a named edge.
+///
+/// The traction vector is T = −p n + s τ, with n the outward unit normal and τ the
+/// counter-clockwise unit tangent of the body's boundary (τ = n turned by +90°).
+/// With a window, p and s vary linearly in the window coordinate from the first to the second
+/// value and vanish outside it; without one they are the first value everywhere.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Traction {
+    /// Name of the loaded edge.
+    pub edge: String,
+    /// Normal pressure p at the window's lower and upper bound, MPa (positive pushes inwards).
+    pub normal: [f64; 2],
+    /// Shear s at the window's lower and upper bound, MPa.
+    pub shear: [f64; 2],
+    /// Optional coordinate window.
+    pub window: Option<Window>,
+}
+
+/// Edge-trace dofs of one element edge: for each of the p + 1 trace functions (start vertex,
+/// end vertex, degrees 2..=p, the order of [`shape_1d`]) the global x and z dofs and the sign.
+pub fn trace_dofs(dofs: &DofMap, mesh: &Mesh, basis: &crate::basis::QuadBasis, element: usize, local: usize) -> Vec<([usize; 2], f64)> {
+    let ed = dofs.element_dofs(mesh, element);
+    basis
+        .edge_trace(local)
+        .into_iter()
+        .map(|m| ([ed.global[2 * m], ed.global[2 * m + 1]], ed.sign[2 * m]))
+        .collect()
+}
+
+/// Gauss points on the part of local edge `local` inside `window`: (t, ds) with t the edge
+/// parameter and ds the arc-length weight (mm).
+pub fn edge_quadrature(mesh: &Mesh, element: usize, local: usize, window: Option<Window>, n: usize) -> Vec<(f64, f64)> {
+    let (t0, t1) = match window {
+        None => (-1.0, 1.0),
+        Some(w) => match window_interval(mesh, element, local, w) {
+            Some(i) => i,
+            None => return Vec::new(),
+        },
+    };
+    let rule = gauss_legendre(n);
+    let half = 0.5 * (t1 - t0);
+    rule.points
+        .iter()
+        .zip(&rule.weights)
+        .map(|(&r, &w)| {
+            let t = t0 + half * (r + 1.0);
+            let (tangent, _) = mesh.edge_frame(element, local, t);
+            (t, w * half * tangent[0].hypot(tangent[1]))
+        })
+        .collect()
+}
+
+/// The sub-interval of t where the window coordinate lies in range (the coordinate is taken as
+/// monotone along one element edge, true for every sensible mesh).
+fn window_interval(mesh: &Mesh, element: usize, local: usize, w: Window) -> Option<(f64, f64)> {
+    let coord = |t: f64| mesh.point_on_edge(element, local, t)[w.axis];
+    let (a, b) = (w.range[0], w.range[1]);
+    let inside = |c: f64| c >= a - 1e-12 * (1.0 + a.abs()) && c <= b + 1e-12 * (1.0 + b.abs());
+    let (c0, c1) = (coord(-1.0), coord(1.0));
+    if (c1 - c0).abs() <= 1e-12 * (1.0 + c0.abs()) {
+        return inside(c0).then_some((-1.0, 1.0));
+    }
+    let increasing = c1 > c0;
+    let crossing = |target: f64| {
+        let (mut lo, mut hi) = (-1.0, 1.0);
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if (coord(mid) < target) == increasing {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let (cmin, cmax) = (c0.min(c1), c0.max(c1));
+    if cmax <= a || cmin >= b {
+        return None;
+    }
+    let ta = if cmin < a { crossing(a) } else if increasing { -1.0 } else { 1.0 };
+    let tb = if cmax > b { crossing(b) } else if increasing { 1.0 } else { -1.0 };
+    let (lo, hi) = (ta.min(tb), ta.max(tb));
+    (hi > lo).then_some((lo, hi))
+}
+
+impl Traction {
+    /// Traction vector T (MPa) at point `x` with outward unit normal `normal`.
+    pub fn vector(&self, x: Point, normal: Point) -> Point {
+        let s = match self.window {
+            Some(w) if w.range[1] > w.range[0] => ((x[w.axis] - w.range[0]) / (w.range[1] - w.range[0])).clamp(0.0, 1.0),
+            _ => 0.0,
+        };
+        let p = self.normal[0] + s * (self.normal[1] - self.normal[0]);
+        let q = self.shear[0] + s * (self.shear[1] - self.shear[0]);
+        let tangent = [-normal[1], normal[0]];
+        [-p * normal[0] + q * tangent[0], -p * normal[1] + q * tangent[1]]
+    }
+
+    /// Visit every quadrature point of this traction: (element, local edge, t, x, T, dS·thickness).
+    pub fn for_each_point(&self, mesh: &Mesh, edges: &[(usize, usize)], p: usize, thickness: f64, mut visit: impl FnMut(usize, usize, f64, Point, Point, f64)) {
+        for &(element, local) in edges {
+            for (t, ds) in edge_quadrature(mesh, element, local, self.window, p + 4) {
+                let x = mesh.point_on_edge(element, local, t);
+                let (_, normal) = mesh.edge_frame(element, local, t);
+                visit(element, local, t, x, self.vector(x, normal), ds * thickness);
+            }
+        }
+    }
+
+    /// Resultant force (N) and its moment about `pivot` (N·mm, about +y: M = Δz F_x − Δx F_z).
+    pub fn resultant(&self, mesh: &Mesh, edges: &[(usize, usize)], p: usize, thickness: f64, pivot: Point) -> (Point, f64) {
+        let mut force = [0.0; 2];
+        let mut moment = 0.0;
+        self.for_each_point(mesh, edges, p, thickness, |_, _, _, x, t, w| {
+            force[0] += t[0] * w;
+            force[1] += t[1] * w;
+            moment += ((x[1] - pivot[1]) * t[0] - (x[0] - pivot[0]) * t[1]) * w;
+        });
+        (force, moment)
+    }
+
+    /// Add the consistent nodal forces of this traction to `load` (N per global dof).
+    pub fn add_to_load(&self, mesh: &Mesh, edges: &[(usize, usize)], dofs: &DofMap, basis: &crate::basis::QuadBasis, thickness: f64, load: &mut [f64]) {
+        let p = dofs.p;
+        let mut values = vec![0.0; p + 1];
+        let mut derivatives = vec![0.0; p + 1];
+        let mut last: Option<(usize, usize, Vec<([usize; 2], f64)>)> = None;
+        self.for_each_point(mesh, edges, p, thickness, |element, local, t, _, traction, w| {
+            if last.as_ref().map(|l| (l.0, l.1)) != Some((element, local)) {
+                last = Some((element, local, trace_dofs(dofs, mesh, basis, element, local)));
+            }
+            let trace = &last.as_ref().unwrap().2;
+            shape_1d(p, t, &mut values, &mut derivatives);
+            for (k, (g, sign)) in trace.iter().enumerate() {
+                for c in 0..2 {
+                    load[g[c]] += sign * values[k] * traction[c] * w;
+                }
+            }
+        });
+    }
+}

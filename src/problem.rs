@@ -1,0 +1,451 @@
+//! Problem files: the TOML schema, its validation and the construction of the elastic bodies.
+//!
+//! Every error names the file and the key (`bodies[0].blocks[1].corners`) and says what is
+//! wrong; nothing here panics on bad input. Units: mm, N, MPa, s.
+
+use crate::basis::Space;
+use crate::elasticity::{Constraints, Discretisation, ElasticBody};
+use crate::geometry::{Block, EdgeShape, Point};
+use crate::loads::{Traction, Window};
+use crate::material::{Analysis, Material};
+use crate::mesh::{Mesh, MeshBlock};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// A problem-file error: which file, which key, what is wrong.
+#[derive(Debug, thiserror::Error)]
+#[error("{file}: {key}: {message}")]
+pub struct ProblemError {
+    /// File name (or built-in example name).
+    pub file: String,
+    /// Dotted key path of the offending entry.
+    pub key: String,
+    /// What is wrong.
+    pub message: String,
+}
+
+/// `[analysis]`: the 2D idealisation and the discretisation.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AnalysisSpec {
+    /// "plane_stress" or "plane_strain".
+    pub kind: String,
+    /// Out-of-plane thickness, mm.
+    pub thickness: f64,
+    /// Polynomial degree p (1..=20).
+    pub p: usize,
+    /// "tensor" (default) or "trunk".
+    #[serde(default = "default_space")]
+    pub space: String,
+}
+
+fn default_space() -> String {
+    "tensor".into()
+}
+
+/// `[materials.NAME]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSpec {
+    /// Young's modulus, MPa (> 0).
+    pub young: f64,
+    /// Poisson's ratio (−1 < ν < 0.5).
+    pub poisson: f64,
+}
+
+/// One number, or two (start and end of a linear variation).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(untagged)]
+pub enum OneOrTwo {
+    /// Constant value.
+    One(f64),
+    /// Values at the lower and upper window bound.
+    Two([f64; 2]),
+}
+
+impl OneOrTwo {
+    fn pair(&self) -> [f64; 2] {
+        match *self {
+            OneOrTwo::One(v) => [v, v],
+            OneOrTwo::Two(v) => v,
+        }
+    }
+}
+
+/// Mesh lines along one block direction: a number of equal divisions or explicit parameters.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(untagged)]
+pub enum LinesSpec {
+    /// Equal divisions.
+    Count(usize),
+    /// Parameters in [0, 1], rising, 0 and 1 included.
+    List(Vec<f64>),
+}
+
+/// An arc edge of a block.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ArcSpec {
+    /// Block edge 0..=3 (0: c0→c1, 1: c1→c2, 2: c2→c3, 3: c3→c0).
+    pub edge: usize,
+    /// Arc centre [x, z], mm.
+    pub center: Point,
+}
+
+/// Names of block edges.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EdgeNames {
+    /// Edge 0 (c0→c1).
+    pub bottom: Option<String>,
+    /// Edge 1 (c1→c2).
+    pub right: Option<String>,
+    /// Edge 2 (c2→c3).
+    pub top: Option<String>,
+    /// Edge 3 (c3→c0).
+    pub left: Option<String>,
+}
+
+/// `[[bodies.blocks]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BlockSpec {
+    /// Four corners [x, z] (mm), counter-clockwise.
+    pub corners: [Point; 4],
+    /// Arc edges (others are straight).
+    #[serde(default)]
+    pub arcs: Vec<ArcSpec>,
+    /// Mesh lines along c0→c1.
+    pub u: LinesSpec,
+    /// Mesh lines along c0→c3.
+    pub v: LinesSpec,
+    /// Material name.
+    pub material: String,
+    /// Edge names.
+    #[serde(default)]
+    pub names: EdgeNames,
+}
+
+/// `[[bodies.supports]]`: zero displacement on a named edge or at a vertex.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SupportSpec {
+    /// Named edge (give `edge` or `point`).
+    pub edge: Option<String>,
+    /// A mesh vertex [x, z], mm.
+    pub point: Option<Point>,
+    /// Components held: any of "x", "z".
+    pub fix: Vec<String>,
+}
+
+/// A coordinate window: exactly one of x or z.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WindowSpec {
+    /// x range, mm.
+    pub x: Option<[f64; 2]>,
+    /// z range, mm.
+    pub z: Option<[f64; 2]>,
+}
+
+/// `[[bodies.tractions]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TractionSpec {
+    /// Named edge.
+    pub edge: String,
+    /// Normal pressure, MPa (positive pushes into the body); two values vary linearly over the window.
+    #[serde(default = "zero")]
+    pub normal: OneOrTwo,
+    /// Shear along the counter-clockwise boundary tangent, MPa.
+    #[serde(default = "zero")]
+    pub shear: OneOrTwo,
+    /// Optional window.
+    pub window: Option<WindowSpec>,
+}
+
+fn zero() -> OneOrTwo {
+    OneOrTwo::One(0.0)
+}
+
+/// `[[bodies]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodySpec {
+    /// Body name.
+    pub name: String,
+    /// Blocks.
+    pub blocks: Vec<BlockSpec>,
+    /// Supports.
+    #[serde(default)]
+    pub supports: Vec<SupportSpec>,
+    /// Tractions.
+    #[serde(default)]
+    pub tractions: Vec<TractionSpec>,
+}
+
+/// `[probes.NAME]`: a point where results are reported.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProbeSpec {
+    /// Body name.
+    pub body: String,
+    /// Point [x, z], mm.
+    pub at: Point,
+}
+
+/// The whole problem file. Contact and wear sections are read by later stages.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProblemSpec {
+    /// Short title.
+    #[serde(default)]
+    pub title: String,
+    /// What the problem is and where its numbers come from.
+    #[serde(default)]
+    pub description: String,
+    /// Analysis settings.
+    pub analysis: AnalysisSpec,
+    /// Materials by name.
+    pub materials: BTreeMap<String, MaterialSpec>,
+    /// Bodies.
+    pub bodies: Vec<BodySpec>,
+    /// Probes by name.
+    #[serde(default)]
+    pub probes: BTreeMap<String, ProbeSpec>,
+    /// Contact settings (see [`crate::contact`]).
+    pub contact: Option<crate::contact::ContactSpec>,
+    /// Rigid loading plate (see [`crate::contact`]).
+    pub plate: Option<crate::contact::PlateSpec>,
+    /// Wear settings (see [`crate::wear`]).
+    pub wear: Option<crate::wear::WearSpec>,
+}
+
+/// A validated problem: the parsed file plus the objects built from it.
+#[derive(Clone, Debug)]
+pub struct Problem {
+    /// File name, for messages.
+    pub file: String,
+    /// The parsed file.
+    pub spec: ProblemSpec,
+    /// 2D idealisation with thickness.
+    pub analysis: Analysis,
+    /// Degree and space.
+    pub discretisation: Discretisation,
+    /// Materials in `spec.materials` order.
+    pub materials: Vec<Material>,
+}
+
+impl Problem {
+    /// Make an error for key `key` of this file.
+    pub fn error(&self, key: impl Into<String>, message: impl Into<String>) -> ProblemError {
+        ProblemError { file: self.file.clone(), key: key.into(), message: message.into() }
+    }
+
+    /// Parse and validate a problem file's text.
+    pub fn from_toml(text: &str, file: &str) -> Result<Problem, ProblemError> {
+        let spec: ProblemSpec = toml::from_str(text).map_err(|e| {
+            let message = e.message().to_string();
+            let key = match e.span() {
+                Some(span) => format!("line {}", text[..span.start.min(text.len())].lines().count().max(1)),
+                None => "(file)".into(),
+            };
+            ProblemError { file: file.into(), key, message }
+        })?;
+        let err = |key: &str, message: String| ProblemError { file: file.into(), key: key.into(), message };
+        let a = &spec.analysis;
+        if !(a.thickness.is_finite() && a.thickness > 0.0) {
+            return Err(err("analysis.thickness", format!("must be a positive length in mm, got {}", a.thickness)));
+        }
+        let analysis = match a.kind.as_str() {
+            "plane_stress" => Analysis::PlaneStress { thickness: a.thickness },
+            "plane_strain" => Analysis::PlaneStrain { thickness: a.thickness },
+            other => return Err(err("analysis.kind", format!("must be \"plane_stress\" or \"plane_strain\", got \"{other}\""))),
+        };
+        if a.p == 0 || a.p > 20 {
+            return Err(err("analysis.p", format!("polynomial degree must be 1..=20, got {}", a.p)));
+        }
+        let space = match a.space.as_str() {
+            "tensor" => Space::TensorProduct,
+            "trunk" => Space::Trunk,
+            other => return Err(err("analysis.space", format!("must be \"tensor\" or \"trunk\", got \"{other}\""))),
+        };
+        let mut materials = Vec::new();
+        for (name, m) in &spec.materials {
+            if !(m.young.is_finite() && m.young > 0.0) {
+                return Err(err(&format!("materials.{name}.young"), format!("Young's modulus must be positive (MPa), got {}", m.young)));
+            }
+            if !(m.poisson.is_finite() && m.poisson > -1.0 && m.poisson < 0.5) {
+                return Err(err(&format!("materials.{name}.poisson"), format!("Poisson's ratio must lie in (-1, 0.5), got {}", m.poisson)));
+            }
+            materials.push(Material { young: m.young, poisson: m.poisson });
+        }
+        if spec.bodies.is_empty() {
+            return Err(err("bodies", "at least one body is needed".into()));
+        }
+        let problem = Problem {
+            file: file.into(),
+            analysis,
+            discretisation: Discretisation { p: a.p, space },
+            materials,
+            spec,
+        };
+        for b in 0..problem.spec.bodies.len() {
+            problem.mesh(b)?;
+        }
+        for (name, probe) in &problem.spec.probes {
+            problem.body_index(&probe.body).map_err(|_| problem.error(format!("probes.{name}.body"), format!("no body named \"{}\"", probe.body)))?;
+        }
+        Ok(problem)
+    }
+
+    /// Index of the body called `name`.
+    pub fn body_index(&self, name: &str) -> Result<usize, ProblemError> {
+        self.spec
+            .bodies
+            .iter()
+            .position(|b| b.name == name)
+            .ok_or_else(|| self.error("bodies", format!("no body named \"{name}\"")))
+    }
+
+    /// Build the mesh of body `b`.
+    pub fn mesh(&self, b: usize) -> Result<Mesh, ProblemError> {
+        let body = &self.spec.bodies[b];
+        let material_names: Vec<&String> = self.spec.materials.keys().collect();
+        let mut blocks = Vec::new();
+        for (k, bs) in body.blocks.iter().enumerate() {
+            let key = |field: &str| format!("bodies[{b}].blocks[{k}].{field}");
+            let mut shapes = [EdgeShape::Straight, EdgeShape::Straight, EdgeShape::Straight, EdgeShape::Straight];
+            for arc in &bs.arcs {
+                if arc.edge > 3 {
+                    return Err(self.error(key("arcs"), format!("edge must be 0..=3, got {}", arc.edge)));
+                }
+                shapes[arc.edge] = EdgeShape::ArcAbout(arc.center);
+            }
+            if bs.corners.iter().flatten().any(|c| !c.is_finite()) {
+                return Err(self.error(key("corners"), "coordinates must be finite numbers"));
+            }
+            let block = Block::new(bs.corners, shapes).map_err(|e| self.error(key("corners"), e.to_string()))?;
+            let material = material_names
+                .iter()
+                .position(|m| **m == bs.material)
+                .ok_or_else(|| self.error(key("material"), format!("no material named \"{}\"", bs.material)))?;
+            let lines = |spec: &LinesSpec, field: &str| -> Result<Vec<f64>, ProblemError> {
+                match spec {
+                    LinesSpec::Count(0) => Err(self.error(key(field), "needs at least one division")),
+                    LinesSpec::Count(n) if *n > 10_000 => Err(self.error(key(field), format!("{n} divisions is too many"))),
+                    LinesSpec::Count(n) => Ok((0..=*n).map(|i| i as f64 / *n as f64).collect()),
+                    LinesSpec::List(v) => Ok(v.clone()),
+                }
+            };
+            let n = &bs.names;
+            blocks.push(MeshBlock {
+                block,
+                u_lines: lines(&bs.u, "u")?,
+                v_lines: lines(&bs.v, "v")?,
+                material,
+                edge_names: [n.bottom.clone(), n.right.clone(), n.top.clone(), n.left.clone()],
+            });
+        }
+        Mesh::build(blocks).map_err(|e| self.error(format!("bodies[{b}].blocks"), e.to_string()))
+    }
+
+    /// The (element, local edge) list of edge `name` of body `b`.
+    pub fn named_edge<'m>(&self, mesh: &'m Mesh, b: usize, name: &str, key: &str) -> Result<&'m [(usize, usize)], ProblemError> {
+        mesh.named_edges
+            .get(name)
+            .map(|v| v.as_slice())
+            .ok_or_else(|| self.error(key, format!("body \"{}\" has no edge named \"{name}\"", self.spec.bodies[b].name)))
+    }
+
+    /// The tractions of body `b` as library objects.
+    pub fn tractions(&self, b: usize) -> Result<Vec<Traction>, ProblemError> {
+        let mut out = Vec::new();
+        for (k, t) in self.spec.bodies[b].tractions.iter().enumerate() {
+            let key = |f: &str| format!("bodies[{b}].tractions[{k}].{f}");
+            let window = match &t.window {
+                None => None,
+                Some(WindowSpec { x: Some(r), z: None }) => Some(Window { axis: 0, range: *r }),
+                Some(WindowSpec { x: None, z: Some(r) }) => Some(Window { axis: 1, range: *r }),
+                Some(_) => return Err(self.error(key("window"), "give exactly one of x or z")),
+            };
+            if let Some(w) = window {
+                if !(w.range[0].is_finite() && w.range[1].is_finite() && w.range[1] > w.range[0]) {
+                    return Err(self.error(key("window"), format!("range must rise, got {:?}", w.range)));
+                }
+            }
+            let (normal, shear) = (t.normal.pair(), t.shear.pair());
+            if normal.iter().chain(&shear).any(|v| !v.is_finite()) {
+                return Err(self.error(key("normal"), "values must be finite"));
+            }
+            if window.is_none() && (normal[0] != normal[1] || shear[0] != shear[1]) {
+                return Err(self.error(key("normal"), "a linear variation needs a window"));
+            }
+            out.push(Traction { edge: t.edge.clone(), normal, shear, window });
+        }
+        Ok(out)
+    }
+
+    /// Supports of body `b` as fixed global dofs, plus `extra_clamped` edges held in x and z.
+    pub fn constraints(&self, b: usize, mesh: &Mesh, dofs: &crate::dofs::DofMap, basis: &crate::basis::QuadBasis, extra_clamped: &[&str]) -> Result<Constraints, ProblemError> {
+        let mut fixed = Vec::new();
+        let edge_dofs = |name: &str, comps: &[usize], key: &str| -> Result<Vec<usize>, ProblemError> {
+            let mut out = Vec::new();
+            for &(element, local) in self.named_edge(mesh, b, name, key)? {
+                for (g, _) in crate::loads::trace_dofs(dofs, mesh, basis, element, local) {
+                    out.extend(comps.iter().map(|&c| g[c]));
+                }
+            }
+            Ok(out)
+        };
+        for (k, s) in self.spec.bodies[b].supports.iter().enumerate() {
+            let key = format!("bodies[{b}].supports[{k}]");
+            let mut comps = Vec::new();
+            for c in &s.fix {
+                match c.as_str() {
+                    "x" => comps.push(0),
+                    "z" => comps.push(1),
+                    other => return Err(self.error(format!("{key}.fix"), format!("components are \"x\" and \"z\", got \"{other}\""))),
+                }
+            }
+            match (&s.edge, s.point) {
+                (Some(edge), None) => fixed.extend(edge_dofs(edge, &comps, &format!("{key}.edge"))?),
+                (None, Some(point)) => {
+                    let v = mesh.vertex_at(point).ok_or_else(|| self.error(format!("{key}.point"), format!("({}, {}) is not a mesh vertex", point[0], point[1])))?;
+                    fixed.extend(comps.iter().map(|&c| dofs.vertex_dof(v, c)));
+                }
+                _ => return Err(self.error(key, "give exactly one of edge or point")),
+            }
+        }
+        for name in extra_clamped {
+            fixed.extend(edge_dofs(name, &[0, 1], "plate.edge")?);
+        }
+        fixed.sort_unstable();
+        fixed.dedup();
+        Ok(Constraints { fixed })
+    }
+
+    /// Build, assemble and factorise body `b`; `extra_clamped` edges are held (rigid plate).
+    pub fn elastic_body(&self, b: usize, extra_clamped: &[&str]) -> Result<ElasticBody, ProblemError> {
+        let mesh = self.mesh(b)?;
+        let dofs = crate::dofs::DofMap::new(&mesh, self.discretisation.p);
+        let basis = crate::basis::QuadBasis::new(self.discretisation.p, self.discretisation.space);
+        let constraints = self.constraints(b, &mesh, &dofs, &basis, extra_clamped)?;
+        let name = &self.spec.bodies[b].name;
+        ElasticBody::new(name, mesh, self.materials.clone(), self.analysis, self.discretisation, &constraints)
+            .map_err(|e| self.error(format!("bodies[{b}].supports"), e.to_string()))
+    }
+
+    /// The global load vector of body `b` from its tractions (edges in `skip` excluded).
+    pub fn load_vector(&self, b: usize, body: &ElasticBody, skip: &[&str]) -> Result<Vec<f64>, ProblemError> {
+        let mut load = vec![0.0; body.dofs.n_dofs()];
+        for (k, t) in self.tractions(b)?.iter().enumerate() {
+            if skip.contains(&t.edge.as_str()) {
+                continue;
+            }
+            let edges = self.named_edge(&body.mesh, b, &t.edge, &format!("bodies[{b}].tractions[{k}].edge"))?;
+            t.add_to_load(&body.mesh, edges, &body.dofs, &body.basis, self.analysis.thickness(), &mut load);
+        }
+        Ok(load)
+    }
+}
