@@ -149,7 +149,12 @@ impl ContactSolver {
             _ => vec![0.0; n],
         };
         let make_a = |s: f64| {
-            let mut a: Vec<f64> = contact.a_nn.iter().zip(&contact.a_nt).map(|(nn, nt)| nn - s * contact.friction * nt).collect();
+            let mut a: Vec<f64> = contact
+                .a_nn
+                .iter()
+                .zip(&contact.a_nt)
+                .map(|(nn, nt)| nn - s * contact.friction * nt)
+                .collect();
             for i in 0..n {
                 a[i * n + i] += penalty_compliance[i];
             }
@@ -161,7 +166,10 @@ impl ContactSolver {
             for k in 0..m {
                 for j in 0..n {
                     let phi = contact.rigid_modes[k][j];
-                    let dir = [-pts.normal[j][0] + s * contact.friction * pts.tangent[j][0], -pts.normal[j][1] + s * contact.friction * pts.tangent[j][1]];
+                    let dir = [
+                        -pts.normal[j][0] + s * contact.friction * pts.tangent[j][0],
+                        -pts.normal[j][1] + s * contact.friction * pts.tangent[j][1],
+                    ];
                     e[k * n + j] = phi[0] * dir[0] + phi[1] * dir[1];
                 }
             }
@@ -173,8 +181,14 @@ impl ContactSolver {
                 r[i * m + k] = -(pts.normal[i][0] * phi[0] + pts.normal[i][1] * phi[1]);
             }
         }
-        let gap_to_pressure = (0..n).map(|i| 1.0 / (contact.a_nn[i * n + i] * area[i])).collect();
-        let cached = || Cached { active: vec![], lu: DenseLu::default(), valid: false };
+        let gap_to_pressure = (0..n)
+            .map(|i| 1.0 / (contact.a_nn[i * n + i] * area[i]))
+            .collect();
+        let cached = || Cached {
+            active: vec![],
+            lu: DenseLu::default(),
+            valid: false,
+        };
         ContactSolver {
             n,
             m,
@@ -206,14 +220,26 @@ impl ContactSolver {
 
     /// Solve for initial gap `gap` (mm, one per point) in sliding direction `direction`,
     /// writing into `out` (resized as needed; no allocation once sized).
-    pub fn solve_into(&mut self, gap: &[f64], direction: Direction, out: &mut ContactSolution) -> SolveInfo {
+    pub fn solve_into(
+        &mut self,
+        gap: &[f64],
+        direction: Direction,
+        out: &mut ContactSolution,
+    ) -> SolveInfo {
         let (n, m) = (self.n, self.m);
         out.pressure.resize(n, 0.0);
         out.force.resize(n, 0.0);
         out.gap.resize(n, 0.0);
         out.rigid.resize(m, 0.0);
         out.active.resize(n, true);
-        let mut info = SolveInfo { status: Status::Failed, iterations: 0, factorisations: 0, lemke_pivots: 0, complementarity: f64::INFINITY, equilibrium: f64::INFINITY };
+        let mut info = SolveInfo {
+            status: Status::Failed,
+            iterations: 0,
+            factorisations: 0,
+            lemke_pivots: 0,
+            complementarity: f64::INFINITY,
+            equilibrium: f64::INFINITY,
+        };
         if self.method != Method::Lemke && self.active_set(gap, direction, out, &mut info) {
             info.status = Status::Solved;
         } else {
@@ -230,7 +256,13 @@ impl ContactSolver {
         (out, info)
     }
 
-    fn active_set(&mut self, gap: &[f64], direction: Direction, out: &mut ContactSolution, info: &mut SolveInfo) -> bool {
+    fn active_set(
+        &mut self,
+        gap: &[f64],
+        direction: Direction,
+        out: &mut ContactSolution,
+        info: &mut SolveInfo,
+    ) -> bool {
         let (n, m) = (self.n, self.m);
         let dir = direction.index();
         if self.cache[dir].active.len() != n {
@@ -254,7 +286,9 @@ impl ContactSolver {
             self.rhs.extend(self.index.iter().map(|&i| -gap[i]));
             self.rhs.extend(self.load.iter().map(|l| -l));
             let size = self.index.len() + m;
-            self.cache[dir].lu.solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
+            self.cache[dir]
+                .lu
+                .solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
             if self.rhs.iter().any(|v| !v.is_finite()) {
                 return false;
             }
@@ -270,7 +304,11 @@ impl ContactSolver {
                 // Keep a point whose force is not negative; add one that penetrates (the gap is
                 // compared as a force, d/A_ii, so that both tests share one scale).
                 let tolerance = 1e-13 * force_scale.max(1e-300);
-                let now = if out.active[i] { out.force[i] >= -tolerance } else { out.gap[i] * self.gap_to_pressure[i] * self.area[i] < -tolerance };
+                let now = if out.active[i] {
+                    out.force[i] >= -tolerance
+                } else {
+                    out.gap[i] * self.gap_to_pressure[i] * self.area[i] < -tolerance
+                };
                 changed |= now != out.active[i];
                 out.active[i] = now;
             }
@@ -325,7 +363,13 @@ impl ContactSolver {
         }
     }
 
-    fn lemke_solve(&mut self, gap: &[f64], direction: Direction, out: &mut ContactSolution, info: &mut SolveInfo) {
+    fn lemke_solve(
+        &mut self,
+        gap: &[f64],
+        direction: Direction,
+        out: &mut ContactSolution,
+        info: &mut SolveInfo,
+    ) {
         // z = (P, λ⁺, λ⁻); M = [[A, R, −R], [−E, 0, 0], [E, 0, 0]], q = [g, −L, L]: with E = Rᵀ
         // (no friction) M is positive semi-definite, so Lemke's method finds the solution.
         let (n, m) = (self.n, self.m);
@@ -360,7 +404,8 @@ impl ContactSolver {
                 for i in 0..n {
                     out.active[i] = out.force[i] > 0.0;
                 }
-                self.cache[dir].active.copy_from_slice(&out.active);
+                self.cache[dir].active.clear();
+                self.cache[dir].active.extend_from_slice(&out.active);
                 self.cache[dir].valid = false;
             }
             Err(_) => info.status = Status::Failed,
@@ -368,13 +413,23 @@ impl ContactSolver {
         self.compute_gap(gap, dir, out);
     }
 
-    fn finish(&self, gap: &[f64], direction: Direction, out: &mut ContactSolution, info: &mut SolveInfo) {
+    fn finish(
+        &self,
+        gap: &[f64],
+        direction: Direction,
+        out: &mut ContactSolution,
+        info: &mut SolveInfo,
+    ) {
         let _ = gap;
         let (n, m) = (self.n, self.m);
         for i in 0..n {
             out.pressure[i] = out.force[i] / self.area[i];
         }
-        let peak = out.pressure.iter().fold(0.0f64, |a, p| a.max(p.abs())).max(1e-300);
+        let peak = out
+            .pressure
+            .iter()
+            .fold(0.0f64, |a, p| a.max(p.abs()))
+            .max(1e-300);
         let mut comp = 0.0f64;
         for i in 0..n {
             let d = out.gap[i] + self.penalty_compliance[i] * out.force[i];
@@ -387,7 +442,11 @@ impl ContactSolver {
         for k in 0..m {
             let s: f64 = (0..n).map(|j| e[k * n + j] * out.force[j]).sum();
             eq = eq.max((s + self.load[k]).abs());
-            scale = scale.max(self.load[k].abs()).max((0..n).map(|j| (e[k * n + j] * out.force[j]).abs()).sum::<f64>());
+            scale = scale.max(self.load[k].abs()).max(
+                (0..n)
+                    .map(|j| (e[k * n + j] * out.force[j]).abs())
+                    .sum::<f64>(),
+            );
         }
         info.equilibrium = if m == 0 { 0.0 } else { eq / scale.max(1e-300) };
     }

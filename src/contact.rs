@@ -120,20 +120,36 @@ fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize
     // Order the element edges end to end; `bool` = traverse with t decreasing.
     let ends = |&(e, l): &(usize, usize)| {
         let (a, b) = crate::mesh::EDGE_ENDPOINTS[l];
-        (body.mesh.elements[e].vertices[a], body.mesh.elements[e].vertices[b])
+        (
+            body.mesh.elements[e].vertices[a],
+            body.mesh.elements[e].vertices[b],
+        )
     };
     let mut left: Vec<(usize, usize)> = edges.to_vec();
     let mut chain: Vec<(usize, usize, bool)> = Vec::new();
     // Start at an edge whose start vertex is no other edge's vertex (an open end).
-    let count = |v: usize| edges.iter().filter(|e| ends(e).0 == v || ends(e).1 == v).count();
-    let start = left.iter().position(|e| count(ends(e).0) == 1 || count(ends(e).1) == 1).unwrap_or(0);
+    let count = |v: usize| {
+        edges
+            .iter()
+            .filter(|e| ends(e).0 == v || ends(e).1 == v)
+            .count()
+    };
+    let start = left
+        .iter()
+        .position(|e| count(ends(e).0) == 1 || count(ends(e).1) == 1)
+        .unwrap_or(0);
     let first = left.remove(start);
     let (a, b) = ends(&first);
     let reversed = count(a) != 1 && count(b) == 1;
     chain.push((first.0, first.1, reversed));
     let mut tip = if reversed { a } else { b };
     while !left.is_empty() {
-        let Some(k) = left.iter().position(|e| ends(e).0 == tip || ends(e).1 == tip) else { break };
+        let Some(k) = left
+            .iter()
+            .position(|e| ends(e).0 == tip || ends(e).1 == tip)
+        else {
+            break;
+        };
         let next = left.remove(k);
         let (a, b) = ends(&next);
         let reversed = b == tip;
@@ -146,19 +162,33 @@ fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize
 impl ContactPoints {
     /// Gauss–Lobatto points (p + 1 per element edge, shared end points) along body 1's edge,
     /// with one trace per point for body 1.
-    fn on_body1(body: &ElasticBody, edges: &[(usize, usize)], thickness_unused: f64) -> (ContactPoints, Vec<Trace>) {
+    fn on_body1(
+        body: &ElasticBody,
+        edges: &[(usize, usize)],
+        thickness_unused: f64,
+    ) -> (ContactPoints, Vec<Trace>) {
         let _ = thickness_unused;
         let p = body.dofs.p;
         let rule = gauss_lobatto(p + 1);
         let chain = chain_edge(body, edges);
-        let mut pts = ContactPoints { x: vec![], weight: vec![], normal: vec![], tangent: vec![], initial_gap: vec![] };
+        let mut pts = ContactPoints {
+            x: vec![],
+            weight: vec![],
+            normal: vec![],
+            tangent: vec![],
+            initial_gap: vec![],
+        };
         let mut traces = Vec::new();
         let mut values = vec![0.0; p + 1];
         let mut derivs = vec![0.0; p + 1];
         for (ci, &(element, local, reversed)) in chain.iter().enumerate() {
             let dofs = trace_dofs(&body.dofs, &body.mesh, &body.basis, element, local);
             for k in 0..rule.points.len() {
-                let t = if reversed { -rule.points[k] } else { rule.points[k] };
+                let t = if reversed {
+                    -rule.points[k]
+                } else {
+                    rule.points[k]
+                };
                 let (tan, normal) = body.mesh.edge_frame(element, local, t);
                 let w = rule.weights[k] * tan[0].hypot(tan[1]);
                 if k == 0 && ci > 0 {
@@ -167,7 +197,13 @@ impl ContactPoints {
                     continue;
                 }
                 shape_1d(p, t, &mut values, &mut derivs);
-                traces.push(dofs.iter().zip(&values).map(|(&(g, s), &v)| (g, s * v)).filter(|x| x.1 != 0.0).collect());
+                traces.push(
+                    dofs.iter()
+                        .zip(&values)
+                        .map(|(&(g, s), &v)| (g, s * v))
+                        .filter(|x| x.1 != 0.0)
+                        .collect(),
+                );
                 pts.x.push(body.mesh.point_on_edge(element, local, t));
                 pts.weight.push(w);
                 pts.normal.push(normal);
@@ -186,7 +222,12 @@ impl ContactPoints {
 }
 
 /// Find the point of body 2's edge on the line x + s n and return (s, trace).
-fn project_on_body2(body: &ElasticBody, edges: &[(usize, usize)], x: Point, n: Point) -> Option<(f64, Trace)> {
+fn project_on_body2(
+    body: &ElasticBody,
+    edges: &[(usize, usize)],
+    x: Point,
+    n: Point,
+) -> Option<(f64, Trace)> {
     let p = body.dofs.p;
     let mut best: Option<(f64, usize, usize, f64)> = None;
     for &(element, local) in edges {
@@ -226,7 +267,14 @@ fn project_on_body2(body: &ElasticBody, edges: &[(usize, usize)], x: Point, n: P
     let mut values = vec![0.0; p + 1];
     let mut derivs = vec![0.0; p + 1];
     shape_1d(p, t, &mut values, &mut derivs);
-    Some((s, dofs.iter().zip(&values).map(|(&(g, sg), &v)| (g, sg * v)).filter(|x| x.1 != 0.0).collect()))
+    Some((
+        s,
+        dofs.iter()
+            .zip(&values)
+            .map(|(&(g, sg), &v)| (g, sg * v))
+            .filter(|x| x.1 != 0.0)
+            .collect(),
+    ))
 }
 
 /// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces.
@@ -244,20 +292,39 @@ fn flexibility(body: &ElasticBody, traces: &[Trace]) -> Mat<f64> {
     body.solve_in_place(&mut rhs);
     Mat::from_fn(2 * n, 2 * n, |r, col| {
         let (i, c) = (r / 2, r % 2);
-        traces[i].iter().map(|&(g, coef)| coef * rhs[(g[c], col)]).sum()
+        traces[i]
+            .iter()
+            .map(|&(g, coef)| coef * rhs[(g[c], col)])
+            .sum()
     })
 }
 
 impl CondensedContact {
     /// Build both bodies, condense them onto the contact points and evaluate the plate load.
     /// Returns the condensed problem and the two factorised bodies (for post-processing).
-    pub fn build(problem: &Problem) -> Result<(CondensedContact, ElasticBody, ElasticBody), ProblemError> {
-        let c = problem.spec.contact.as_ref().ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
+    pub fn build(
+        problem: &Problem,
+    ) -> Result<(CondensedContact, ElasticBody, ElasticBody), ProblemError> {
+        let c = problem
+            .spec
+            .contact
+            .as_ref()
+            .ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
         if !(c.friction.is_finite() && c.friction >= 0.0) {
-            return Err(problem.error("contact.friction", format!("must be ≥ 0, got {}", c.friction)));
+            return Err(problem.error(
+                "contact.friction",
+                format!("must be ≥ 0, got {}", c.friction),
+            ));
         }
-        let b1 = problem.body_index(&c.body).map_err(|_| problem.error("contact.body", format!("no body named \"{}\"", c.body)))?;
-        let b2 = problem.body_index(&c.target_body).map_err(|_| problem.error("contact.target_body", format!("no body named \"{}\"", c.target_body)))?;
+        let b1 = problem
+            .body_index(&c.body)
+            .map_err(|_| problem.error("contact.body", format!("no body named \"{}\"", c.body)))?;
+        let b2 = problem.body_index(&c.target_body).map_err(|_| {
+            problem.error(
+                "contact.target_body",
+                format!("no body named \"{}\"", c.target_body),
+            )
+        })?;
         if b1 == b2 {
             return Err(problem.error("contact.target_body", "must differ from contact.body"));
         }
@@ -265,8 +332,12 @@ impl CondensedContact {
         let clamped: Vec<&str> = plate.iter().map(|p| p.edge.as_str()).collect();
         let body1 = problem.elastic_body(b1, &clamped)?;
         let body2 = problem.elastic_body(b2, &[])?;
-        let edge1 = problem.named_edge(&body1.mesh, b1, &c.edge, "contact.edge")?.to_vec();
-        let edge2 = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?.to_vec();
+        let edge1 = problem
+            .named_edge(&body1.mesh, b1, &c.edge, "contact.edge")?
+            .to_vec();
+        let edge2 = problem
+            .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
+            .to_vec();
         let t = problem.analysis.thickness();
         let (mut points, traces1) = ContactPoints::on_body1(&body1, &edge1, t);
         let mut traces2 = Vec::with_capacity(points.x.len());
@@ -288,10 +359,17 @@ impl CondensedContact {
         let mut a_nt = vec![0.0; n * n];
         for i in 0..n {
             for j in 0..n {
-                let block = |a: usize, b: usize| g1[(2 * i + a, 2 * j + b)] + g2[(2 * i + a, 2 * j + b)];
+                let block =
+                    |a: usize, b: usize| g1[(2 * i + a, 2 * j + b)] + g2[(2 * i + a, 2 * j + b)];
                 let (ni, nj, tj) = (points.normal[i], points.normal[j], points.tangent[j]);
-                let gn = [block(0, 0) * nj[0] + block(0, 1) * nj[1], block(1, 0) * nj[0] + block(1, 1) * nj[1]];
-                let gt = [block(0, 0) * tj[0] + block(0, 1) * tj[1], block(1, 0) * tj[0] + block(1, 1) * tj[1]];
+                let gn = [
+                    block(0, 0) * nj[0] + block(0, 1) * nj[1],
+                    block(1, 0) * nj[0] + block(1, 1) * nj[1],
+                ];
+                let gt = [
+                    block(0, 0) * tj[0] + block(0, 1) * tj[1],
+                    block(1, 0) * tj[0] + block(1, 1) * tj[1],
+                ];
                 a_nn[i * n + j] = ni[0] * gn[0] + ni[1] * gn[1];
                 a_nt[i * n + j] = ni[0] * gt[0] + ni[1] * gt[1];
             }
@@ -300,7 +378,17 @@ impl CondensedContact {
             None => (vec![], vec![], vec![], ([0.0; 2], 0.0)),
             Some(pl) => plate_modes(problem, b1, &body1, pl, &points)?,
         };
-        let contact = CondensedContact { points, thickness: t, friction: c.friction, a_nn, a_nt, rigid_modes, rigid_names, plate_load, plate_resultant };
+        let contact = CondensedContact {
+            points,
+            thickness: t,
+            friction: c.friction,
+            a_nn,
+            a_nt,
+            rigid_modes,
+            rigid_names,
+            plate_load,
+            plate_resultant,
+        };
         Ok((contact, body1, body2))
     }
 
@@ -317,10 +405,18 @@ impl CondensedContact {
 
 type PlateModes = (Vec<Vec<Point>>, Vec<&'static str>, Vec<f64>, (Point, f64));
 
-fn plate_modes(problem: &Problem, b1: usize, body1: &ElasticBody, pl: &PlateSpec, points: &ContactPoints) -> Result<PlateModes, ProblemError> {
+fn plate_modes(
+    problem: &Problem,
+    b1: usize,
+    body1: &ElasticBody,
+    pl: &PlateSpec,
+    points: &ContactPoints,
+) -> Result<PlateModes, ProblemError> {
     let plate_edges = problem.named_edge(&body1.mesh, b1, &pl.edge, "plate.edge")?;
     let pin = match (pl.motion.as_str(), pl.pin) {
-        ("vertical_rotation", None) => return Err(problem.error("plate.pin", "rotation needs a pin [x, z]")),
+        ("vertical_rotation", None) => {
+            return Err(problem.error("plate.pin", "rotation needs a pin [x, z]"))
+        }
         (_, Some(p)) => p,
         (_, None) => {
             // Moments are reported about the plate edge's mid point when no pin is given.
@@ -330,28 +426,52 @@ fn plate_modes(problem: &Problem, b1: usize, body1: &ElasticBody, pl: &PlateSpec
     };
     let translation = |_: Point| [0.0, -1.0];
     let rotation = move |x: Point| [x[1] - pin[1], -(x[0] - pin[0])];
-    let modes: Vec<(&'static str, Box<dyn Fn(Point) -> Point>)> = match pl.motion.as_str() {
+    type Mode = (&'static str, Box<dyn Fn(Point) -> Point>);
+    let modes: Vec<Mode> = match pl.motion.as_str() {
         "fixed" => vec![],
         "vertical" => vec![("lambda_F", Box::new(translation))],
-        "vertical_rotation" => vec![("lambda_F", Box::new(translation)), ("lambda_M", Box::new(rotation))],
-        other => return Err(problem.error("plate.motion", format!("must be \"fixed\", \"vertical\" or \"vertical_rotation\", got \"{other}\""))),
+        "vertical_rotation" => vec![
+            ("lambda_F", Box::new(translation)),
+            ("lambda_M", Box::new(rotation)),
+        ],
+        other => {
+            return Err(problem.error(
+                "plate.motion",
+                format!(
+                    "must be \"fixed\", \"vertical\" or \"vertical_rotation\", got \"{other}\""
+                ),
+            ))
+        }
     };
     let mut force = [0.0; 2];
     let mut moment = 0.0;
     let mut load = vec![0.0; modes.len()];
     let t = problem.analysis.thickness();
-    for tr in problem.tractions(b1)?.iter().filter(|tr| tr.edge == pl.edge) {
-        tr.for_each_point(&body1.mesh, plate_edges, body1.dofs.p, t, |_, _, _, x, trac, w| {
-            force[0] += trac[0] * w;
-            force[1] += trac[1] * w;
-            moment += ((x[1] - pin[1]) * trac[0] - (x[0] - pin[0]) * trac[1]) * w;
-            for (k, (_, phi)) in modes.iter().enumerate() {
-                let f = phi(x);
-                load[k] += (trac[0] * f[0] + trac[1] * f[1]) * w;
-            }
-        });
+    for tr in problem
+        .tractions(b1)?
+        .iter()
+        .filter(|tr| tr.edge == pl.edge)
+    {
+        tr.for_each_point(
+            &body1.mesh,
+            plate_edges,
+            body1.dofs.p,
+            t,
+            |_, _, _, x, trac, w| {
+                force[0] += trac[0] * w;
+                force[1] += trac[1] * w;
+                moment += ((x[1] - pin[1]) * trac[0] - (x[0] - pin[0]) * trac[1]) * w;
+                for (k, (_, phi)) in modes.iter().enumerate() {
+                    let f = phi(x);
+                    load[k] += (trac[0] * f[0] + trac[1] * f[1]) * w;
+                }
+            },
+        );
     }
     let names = modes.iter().map(|m| m.0).collect();
-    let phis = modes.iter().map(|(_, phi)| points.x.iter().map(|&x| phi(x)).collect()).collect();
+    let phis = modes
+        .iter()
+        .map(|(_, phi)| points.x.iter().map(|&x| phi(x)).collect())
+        .collect();
     Ok((phis, names, load, (force, moment)))
 }

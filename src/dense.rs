@@ -95,7 +95,9 @@ mod tests {
         // Zero leading entry forces a row exchange.
         let a = [0.0, 2.0, 1.0, 1.0, 1.0, 0.0, 3.0, 0.0, 1.0];
         let x = [1.0, -2.0, 0.5];
-        let mut b: Vec<f64> = (0..3).map(|i| (0..3).map(|j| a[i * 3 + j] * x[j]).sum()).collect();
+        let mut b: Vec<f64> = (0..3)
+            .map(|i| (0..3).map(|j| a[i * 3 + j] * x[j]).sum())
+            .collect();
         let mut lu = DenseLu::default();
         lu.storage(3).copy_from_slice(&a);
         assert!(lu.factor_in_place());

@@ -44,7 +44,11 @@ impl DofMap {
             next += 2 * (p - 1);
         }
         entity_offset.push(next);
-        DofMap { p, entity_offset, n_vertices: mesh.vertices.len() }
+        DofMap {
+            p,
+            entity_offset,
+            n_vertices: mesh.vertices.len(),
+        }
     }
 
     /// Total number of global (boundary) dofs.
@@ -95,7 +99,11 @@ impl DofMap {
         for e in 0..4 {
             entities[4 + e] = self.n_vertices + el.edges[e];
         }
-        ElementDofs { global, sign, entities }
+        ElementDofs {
+            global,
+            sign,
+            entities,
+        }
     }
 }
 
@@ -140,15 +148,20 @@ impl Pattern {
         let mut col_ptr = Vec::with_capacity(n + 1);
         let mut row_idx = Vec::new();
         col_ptr.push(0);
-        for e in 0..n_entities {
+        for (e, list) in neighbours.iter().enumerate() {
             for _ in 0..size(e) {
-                for &f in &neighbours[e] {
+                for &f in list {
                     row_idx.extend(dofs.entity_offset[f]..dofs.entity_offset[f + 1]);
                 }
                 col_ptr.push(row_idx.len());
             }
         }
-        Pattern { col_ptr, row_idx, neighbours, neighbour_row_offset }
+        Pattern {
+            col_ptr,
+            row_idx,
+            neighbours,
+            neighbour_row_offset,
+        }
     }
 
     /// Position in the value array of the first row of entity `row_entity` in column `col`

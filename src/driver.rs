@@ -1,7 +1,9 @@
 //! The three jobs of the command line as library functions: a static elastic solve, one
 //! contact solve and a wear run. Each returns its results; [`crate::output`] writes them.
 
-use crate::complementarity::{ContactSolution, ContactSolver, Direction, Method, SolveInfo, Status};
+use crate::complementarity::{
+    ContactSolution, ContactSolver, Direction, Method, SolveInfo, Status,
+};
 use crate::contact::CondensedContact;
 use crate::fields::strain_energy;
 use crate::output::{number, numbers};
@@ -36,7 +38,15 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
             if probe.body != body.name {
                 continue;
             }
-            let v = body.values_at(&u, probe.at).ok_or_else(|| problem.error(format!("probes.{name}.at"), format!("({}, {}) is not inside body \"{}\"", probe.at[0], probe.at[1], probe.body)))?;
+            let v = body.values_at(&u, probe.at).ok_or_else(|| {
+                problem.error(
+                    format!("probes.{name}.at"),
+                    format!(
+                        "({}, {}) is not inside body \"{}\"",
+                        probe.at[0], probe.at[1], probe.body
+                    ),
+                )
+            })?;
             probes.insert(name.clone(), json!({ "displacement": numbers(&v.displacement), "stress": numbers(&v.stress), "strain": numbers(&v.strain) }));
         }
     }
@@ -52,38 +62,64 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
 
 /// The solver method named in the problem's `[contact]` section.
 pub fn method(problem: &Problem) -> Result<Method, ProblemError> {
-    let c = problem.spec.contact.as_ref().ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
+    let c = problem
+        .spec
+        .contact
+        .as_ref()
+        .ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
     match c.method.as_str() {
         "active_set" => Ok(Method::ActiveSet),
         "lemke" => Ok(Method::Lemke),
         "penalty" => match c.penalty {
             Some(k) if k.is_finite() && k > 0.0 => Ok(Method::Penalty { stiffness: k }),
-            other => Err(problem.error("contact.penalty", format!("method \"penalty\" needs penalty > 0 (MPa/mm), got {other:?}"))),
+            other => Err(problem.error(
+                "contact.penalty",
+                format!("method \"penalty\" needs penalty > 0 (MPa/mm), got {other:?}"),
+            )),
         },
-        other => Err(problem.error("contact.method", format!("must be \"active_set\", \"lemke\" or \"penalty\", got \"{other}\""))),
+        other => Err(problem.error(
+            "contact.method",
+            format!("must be \"active_set\", \"lemke\" or \"penalty\", got \"{other}\""),
+        )),
     }
 }
 
 /// The first sliding direction named in the problem.
 pub fn direction(problem: &Problem) -> Result<Direction, ProblemError> {
-    let c = problem.spec.contact.as_ref().ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
+    let c = problem
+        .spec
+        .contact
+        .as_ref()
+        .ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
     match c.direction.as_str() {
         "+" => Ok(Direction::Plus),
         "-" | "−" => Ok(Direction::Minus),
-        other => Err(problem.error("contact.direction", format!("must be \"+\" or \"-\", got \"{other}\""))),
+        other => Err(problem.error(
+            "contact.direction",
+            format!("must be \"+\" or \"-\", got \"{other}\""),
+        )),
     }
 }
 
 /// Indices of the contact points nearest to the problem's probes on the contact body.
 pub fn contact_probes(problem: &Problem, contact: &CondensedContact) -> Vec<(String, usize)> {
-    let body = problem.spec.contact.as_ref().map(|c| c.body.clone()).unwrap_or_default();
+    let body = problem
+        .spec
+        .contact
+        .as_ref()
+        .map(|c| c.body.clone())
+        .unwrap_or_default();
     problem
         .spec
         .probes
         .iter()
         .filter(|(_, p)| p.body == body)
         .map(|(name, p)| {
-            let i = (0..contact.len()).min_by(|&i, &j| dist(contact.points.x[i], p.at).total_cmp(&dist(contact.points.x[j], p.at))).unwrap_or(0);
+            let i = (0..contact.len())
+                .min_by(|&i, &j| {
+                    dist(contact.points.x[i], p.at).total_cmp(&dist(contact.points.x[j], p.at))
+                })
+                .unwrap_or(0);
             (name.clone(), i)
         })
         .collect()
@@ -105,14 +141,24 @@ fn info_json(info: &SolveInfo) -> Value {
 }
 
 /// One contact solve of the initial configuration.
-pub fn contact(problem: &Problem) -> Result<(Value, CondensedContact, ContactSolution, SolveInfo), JobError> {
+pub fn contact(
+    problem: &Problem,
+) -> Result<(Value, CondensedContact, ContactSolution, SolveInfo), JobError> {
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
     let setup = start.elapsed().as_secs_f64();
     let mut solver = ContactSolver::new(&contact, method(problem)?);
     let (solution, info) = solver.solve(&contact.points.initial_gap, direction(problem)?);
-    let rigid: serde_json::Map<String, Value> = contact.rigid_names.iter().zip(&solution.rigid).map(|(n, v)| (n.to_string(), number(*v))).collect();
-    let probes: serde_json::Map<String, Value> = contact_probes(problem, &contact).into_iter().map(|(n, i)| (n, number(solution.pressure[i]))).collect();
+    let rigid: serde_json::Map<String, Value> = contact
+        .rigid_names
+        .iter()
+        .zip(&solution.rigid)
+        .map(|(n, v)| (n.to_string(), number(*v)))
+        .collect();
+    let probes: serde_json::Map<String, Value> = contact_probes(problem, &contact)
+        .into_iter()
+        .map(|(n, i)| (n, number(solution.pressure[i])))
+        .collect();
     let summary = json!({
         "title": problem.spec.title,
         "points": contact.len(),
@@ -151,13 +197,22 @@ pub struct WearRun {
 }
 
 /// Run the wear integration of `problem` (optionally overriding the number of steps).
-pub fn wear(problem: &Problem, steps: Option<usize>, on_step: impl FnMut(&crate::wear::StepRecord)) -> Result<WearRun, JobError> {
-    let spec = problem.spec.wear.clone().ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
+pub fn wear(
+    problem: &Problem,
+    steps: Option<usize>,
+    on_step: impl FnMut(&crate::wear::StepRecord),
+) -> Result<WearRun, JobError> {
+    let spec = problem
+        .spec
+        .wear
+        .clone()
+        .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
     let mut spec = spec;
     if let Some(n) = steps {
         spec.steps = n;
     }
-    let integrator = WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
+    let integrator =
+        WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
     let mut solver = ContactSolver::new(&contact, method(problem)?);
@@ -165,9 +220,21 @@ pub fn wear(problem: &Problem, steps: Option<usize>, on_step: impl FnMut(&crate:
     let probes = contact_probes(problem, &contact);
     let probe_index: Vec<usize> = probes.iter().map(|p| p.1).collect();
     let start = Instant::now();
-    let history = integrator.run(&mut solver, &contact, &contact.points.initial_gap, &probe_index, on_step);
+    let history = integrator.run(
+        &mut solver,
+        &contact,
+        &contact.points.initial_gap,
+        &probe_index,
+        on_step,
+    );
     let run_seconds = start.elapsed().as_secs_f64();
-    Ok(WearRun { contact, history, probes, setup_seconds, run_seconds })
+    Ok(WearRun {
+        contact,
+        history,
+        probes,
+        setup_seconds,
+        run_seconds,
+    })
 }
 
 impl WearRun {
@@ -182,7 +249,12 @@ impl WearRun {
                 json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "k": s.k, "iterations": s.iterations, "criterion": number(s.criterion), "dissipation": number(s.dissipation), "delta_w": number(s.delta_w), "probes": probes })
             })
             .collect();
-        let p_sum: Vec<f64> = h.p_plus.iter().zip(&h.p_minus).map(|(a, b)| a + b).collect();
+        let p_sum: Vec<f64> = h
+            .p_plus
+            .iter()
+            .zip(&h.p_minus)
+            .map(|(a, b)| a + b)
+            .collect();
         json!({
             "title": problem.spec.title,
             "points": self.contact.len(),

@@ -103,11 +103,16 @@ fn quadrature_points(mesh: &Mesh, element: usize, p: usize) -> usize {
     // quadrature error below the discretisation error for the meshes we ship (checked by the
     // patch and Lamé tests).
     let (j0, _) = mesh.jacobian(element, -1.0, -1.0);
-    let affine = [(1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (0.0, 0.0)].iter().all(|&(x, y)| {
-        let (j, _) = mesh.jacobian(element, x, y);
-        let scale = j0.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
-        j.iter().flatten().zip(j0.iter().flatten()).all(|(a, b)| (a - b).abs() <= 1e-12 * scale)
-    });
+    let affine = [(1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (0.0, 0.0)]
+        .iter()
+        .all(|&(x, y)| {
+            let (j, _) = mesh.jacobian(element, x, y);
+            let scale = j0.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+            j.iter()
+                .flatten()
+                .zip(j0.iter().flatten())
+                .all(|(a, b)| (a - b).abs() <= 1e-12 * scale)
+        });
     if affine {
         p + 1
     } else {
@@ -182,14 +187,22 @@ fn condense(k: &Mat<f64>, nb: usize, element: usize) -> Result<CondensedElement,
     let n = k.nrows();
     let ni = n - nb;
     if ni == 0 {
-        return Ok(CondensedElement { condensed: k.clone(), recovery: Mat::zeros(0, nb) });
+        return Ok(CondensedElement {
+            condensed: k.clone(),
+            recovery: Mat::zeros(0, nb),
+        });
     }
     let kii = k.submatrix(nb, nb, ni, ni);
     let kib = k.submatrix(nb, 0, ni, nb);
-    let llt = kii.llt(Side::Lower).map_err(|_| ElasticityError::Internal { element })?;
+    let llt = kii
+        .llt(Side::Lower)
+        .map_err(|_| ElasticityError::Internal { element })?;
     let recovery = llt.solve(kib);
     let condensed = k.submatrix(0, 0, nb, nb) - kib.transpose() * &recovery;
-    Ok(CondensedElement { condensed, recovery })
+    Ok(CondensedElement {
+        condensed,
+        recovery,
+    })
 }
 
 impl ElasticBody {
@@ -215,7 +228,14 @@ impl ElasticBody {
             let id = match cache.get(&key) {
                 Some(&id) => id,
                 None => {
-                    let k = element_stiffness(&mesh, element, &basis, &materials[material], analysis, nq);
+                    let k = element_stiffness(
+                        &mesh,
+                        element,
+                        &basis,
+                        &materials[material],
+                        analysis,
+                        nq,
+                    );
                     types.push(condense(&k, nb, element)?);
                     cache.insert(key, types.len() - 1);
                     types.len() - 1
@@ -236,11 +256,14 @@ impl ElasticBody {
             distinct_elements: types.len(),
             nonzeros: values.len(),
         };
-        let symbolic = SymbolicSparseColMat::new_checked(n, n, pattern.col_ptr, None, pattern.row_idx);
+        let symbolic =
+            SymbolicSparseColMat::new_checked(n, n, pattern.col_ptr, None, pattern.row_idx);
         let matrix = SparseColMat::new(symbolic, values);
         let factor = matrix
             .sp_cholesky(Side::Lower)
-            .map_err(|_| ElasticityError::Singular { body: name.to_string() })?;
+            .map_err(|_| ElasticityError::Singular {
+                body: name.to_string(),
+            })?;
         Ok(ElasticBody {
             name: name.to_string(),
             mesh,
@@ -283,7 +306,12 @@ impl ElasticBody {
         let local = (0..self.mesh.elements.len())
             .map(|e| {
                 let ed = self.dofs.element_dofs(&self.mesh, e);
-                let mut u: Vec<f64> = ed.global.iter().zip(&ed.sign).map(|(&g, &s)| s * boundary[g]).collect();
+                let mut u: Vec<f64> = ed
+                    .global
+                    .iter()
+                    .zip(&ed.sign)
+                    .map(|(&g, &s)| s * boundary[g])
+                    .collect();
                 let r = &self.types[self.element_type[e]].recovery;
                 for i in 0..r.nrows() {
                     let mut acc = 0.0;
@@ -319,7 +347,13 @@ fn assemble(
     // Local boundary dofs of each of the 8 entities: vertex k → 2 dofs at 2k; edge e → 2(p−1)
     // dofs starting after the 8 vertex dofs.
     let entity_local: Vec<std::ops::Range<usize>> = (0..8)
-        .map(|k| if k < 4 { 2 * k..2 * k + 2 } else { 8 + 2 * (p - 1) * (k - 4)..8 + 2 * (p - 1) * (k - 3) })
+        .map(|k| {
+            if k < 4 {
+                2 * k..2 * k + 2
+            } else {
+                8 + 2 * (p - 1) * (k - 4)..8 + 2 * (p - 1) * (k - 3)
+            }
+        })
         .collect();
     for (element, &ty) in element_type.iter().enumerate() {
         let ed = dofs.element_dofs(mesh, element);
@@ -337,10 +371,13 @@ fn assemble(
         }
     }
     for col in 0..fixed.len() {
-        for k in pattern.col_ptr[col]..pattern.col_ptr[col + 1] {
-            let row = pattern.row_idx[k];
+        let range = pattern.col_ptr[col]..pattern.col_ptr[col + 1];
+        for (value, &row) in values[range.clone()]
+            .iter_mut()
+            .zip(&pattern.row_idx[range])
+        {
             if fixed[col] || fixed[row] {
-                values[k] = if row == col { 1.0 } else { 0.0 };
+                *value = if row == col { 1.0 } else { 0.0 };
             }
         }
     }

@@ -7,11 +7,26 @@ pub const EXAMPLES: &[(&str, &str)] = &[
     ("punch-a", include_str!("../examples/punch-a.toml")),
     ("punch-b20", include_str!("../examples/punch-b20.toml")),
     ("punch-b40", include_str!("../examples/punch-b40.toml")),
-    ("punch-b40-b1.2", include_str!("../examples/punch-b40-b1.2.toml")),
-    ("punch-b40-b0.8", include_str!("../examples/punch-b40-b0.8.toml")),
-    ("punch-b40-variant2", include_str!("../examples/punch-b40-variant2.toml")),
-    ("punch-b40-variant3", include_str!("../examples/punch-b40-variant3.toml")),
-    ("punch-b20-variant2", include_str!("../examples/punch-b20-variant2.toml")),
+    (
+        "punch-b40-b1.2",
+        include_str!("../examples/punch-b40-b1.2.toml"),
+    ),
+    (
+        "punch-b40-b0.8",
+        include_str!("../examples/punch-b40-b0.8.toml"),
+    ),
+    (
+        "punch-b40-variant2",
+        include_str!("../examples/punch-b40-variant2.toml"),
+    ),
+    (
+        "punch-b40-variant3",
+        include_str!("../examples/punch-b40-variant3.toml"),
+    ),
+    (
+        "punch-b20-variant2",
+        include_str!("../examples/punch-b20-variant2.toml"),
+    ),
 ];
 
 /// The text of built-in example `name`.

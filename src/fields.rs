@@ -16,7 +16,13 @@ pub struct PointValues {
 
 impl ElasticBody {
     /// Field values at reference point (ξ, η) of `element`.
-    pub fn values_at_reference(&self, u: &Displacement, element: usize, xi: f64, eta: f64) -> PointValues {
+    pub fn values_at_reference(
+        &self,
+        u: &Displacement,
+        element: usize,
+        xi: f64,
+        eta: f64,
+    ) -> PointValues {
         let tab = self.basis.tabulate(&[xi], &[eta]);
         let (j, det) = self.mesh.jacobian(element, xi, eta);
         let (dxi_dx, dxi_dz) = (j[1][1] / det, -j[0][1] / det);
@@ -41,7 +47,11 @@ impl ElasticBody {
         for (r, row) in d.iter().enumerate() {
             stress[r] = row.iter().zip(&strain).map(|(a, b)| a * b).sum();
         }
-        PointValues { displacement: disp, strain, stress }
+        PointValues {
+            displacement: disp,
+            strain,
+            stress,
+        }
     }
 
     /// Field values at physical point `x` (mm); `None` if the point is outside the body.
@@ -54,5 +64,9 @@ impl ElasticBody {
 /// Strain energy ½ fᵀu (N·mm) of a solution for load vector `load`; exact for zero-valued
 /// supports, which are the only ones wearfem has.
 pub fn strain_energy(load: &[f64], u: &Displacement) -> f64 {
-    0.5 * load.iter().zip(&u.boundary).map(|(f, d)| f * d).sum::<f64>()
+    0.5 * load
+        .iter()
+        .zip(&u.boundary)
+        .map(|(f, d)| f * d)
+        .sum::<f64>()
 }

@@ -12,8 +12,14 @@ pub enum GeometryError {
     #[error("block corners are not counter-clockwise (signed area {area} mm²)")]
     Clockwise { area: f64 },
     /// The two ends of an arc are not equally far from its centre.
-    #[error("arc on edge {edge}: corners are at distances {r_start} and {r_end} mm from the centre")]
-    ArcRadiusMismatch { edge: usize, r_start: f64, r_end: f64 },
+    #[error(
+        "arc on edge {edge}: corners are at distances {r_start} and {r_end} mm from the centre"
+    )]
+    ArcRadiusMismatch {
+        edge: usize,
+        r_start: f64,
+        r_end: f64,
+    },
     /// An arc of zero radius.
     #[error("arc on edge {edge} is degenerate (radius {radius} mm)")]
     DegenerateArc { edge: usize, radius: f64 },
@@ -29,15 +35,28 @@ pub enum Curve {
     Line { start: Point, end: Point },
     /// Arc about `center`, radius `radius`, angle going linearly from `start_angle` to
     /// `end_angle` (radians; end < start means clockwise).
-    Arc { center: Point, radius: f64, start_angle: f64, end_angle: f64 },
+    Arc {
+        center: Point,
+        radius: f64,
+        start_angle: f64,
+        end_angle: f64,
+    },
 }
 
 impl Curve {
     /// Point at parameter t.
     pub fn point(&self, t: f64) -> Point {
         match *self {
-            Curve::Line { start, end } => [start[0] + t * (end[0] - start[0]), start[1] + t * (end[1] - start[1])],
-            Curve::Arc { center, radius, start_angle, end_angle } => {
+            Curve::Line { start, end } => [
+                start[0] + t * (end[0] - start[0]),
+                start[1] + t * (end[1] - start[1]),
+            ],
+            Curve::Arc {
+                center,
+                radius,
+                start_angle,
+                end_angle,
+            } => {
                 let a = start_angle + t * (end_angle - start_angle);
                 [center[0] + radius * a.cos(), center[1] + radius * a.sin()]
             }
@@ -48,7 +67,12 @@ impl Curve {
     pub fn derivative(&self, t: f64) -> Point {
         match *self {
             Curve::Line { start, end } => [end[0] - start[0], end[1] - start[1]],
-            Curve::Arc { radius, start_angle, end_angle, .. } => {
+            Curve::Arc {
+                radius,
+                start_angle,
+                end_angle,
+                ..
+            } => {
                 let sweep = end_angle - start_angle;
                 let a = start_angle + t * sweep;
                 [-radius * sweep * a.sin(), radius * sweep * a.cos()]
@@ -69,8 +93,21 @@ impl Curve {
     /// The same curve traversed backwards.
     pub fn reversed(&self) -> Curve {
         match *self {
-            Curve::Line { start, end } => Curve::Line { start: end, end: start },
-            Curve::Arc { center, radius, start_angle, end_angle } => Curve::Arc { center, radius, start_angle: end_angle, end_angle: start_angle },
+            Curve::Line { start, end } => Curve::Line {
+                start: end,
+                end: start,
+            },
+            Curve::Arc {
+                center,
+                radius,
+                start_angle,
+                end_angle,
+            } => Curve::Arc {
+                center,
+                radius,
+                start_angle: end_angle,
+                end_angle: start_angle,
+            },
         }
     }
 
@@ -78,19 +115,36 @@ impl Curve {
     pub fn length(&self) -> f64 {
         match *self {
             Curve::Line { start, end } => (end[0] - start[0]).hypot(end[1] - start[1]),
-            Curve::Arc { radius, start_angle, end_angle, .. } => radius * (end_angle - start_angle).abs(),
+            Curve::Arc {
+                radius,
+                start_angle,
+                end_angle,
+                ..
+            } => radius * (end_angle - start_angle).abs(),
         }
     }
 
     /// Minor arc (|sweep| < π) from `start` to `end` about `center`.
-    pub fn arc_through(start: Point, end: Point, center: Point, edge: usize) -> Result<Curve, GeometryError> {
+    pub fn arc_through(
+        start: Point,
+        end: Point,
+        center: Point,
+        edge: usize,
+    ) -> Result<Curve, GeometryError> {
         let r_start = (start[0] - center[0]).hypot(start[1] - center[1]);
         let r_end = (end[0] - center[0]).hypot(end[1] - center[1]);
         if r_start <= 0.0 || r_end <= 0.0 || !r_start.is_finite() {
-            return Err(GeometryError::DegenerateArc { edge, radius: r_start.min(r_end) });
+            return Err(GeometryError::DegenerateArc {
+                edge,
+                radius: r_start.min(r_end),
+            });
         }
         if (r_start - r_end).abs() > 1e-9 * r_start.max(r_end) {
-            return Err(GeometryError::ArcRadiusMismatch { edge, r_start, r_end });
+            return Err(GeometryError::ArcRadiusMismatch {
+                edge,
+                r_start,
+                r_end,
+            });
         }
         let a0 = (start[1] - center[1]).atan2(start[0] - center[0]);
         let a1 = (end[1] - center[1]).atan2(end[0] - center[0]);
@@ -101,7 +155,12 @@ impl Curve {
         while sweep < -std::f64::consts::PI {
             sweep += 2.0 * std::f64::consts::PI;
         }
-        Ok(Curve::Arc { center, radius: 0.5 * (r_start + r_end), start_angle: a0, end_angle: a0 + sweep })
+        Ok(Curve::Arc {
+            center,
+            radius: 0.5 * (r_start + r_end),
+            start_angle: a0,
+            end_angle: a0 + sweep,
+        })
     }
 }
 
@@ -131,11 +190,14 @@ impl Block {
     /// Build and validate a block: corners counter-clockwise, arcs consistent, and a positive
     /// Jacobian on a 9 × 9 grid of the parameter square.
     pub fn new(corners: [Point; 4], shapes: [EdgeShape; 4]) -> Result<Block, GeometryError> {
-        let area = 0.5 * (0..4).map(|i| {
-            let (a, b) = (corners[i], corners[(i + 1) % 4]);
-            a[0] * b[1] - b[0] * a[1]
-        }).sum::<f64>();
-        if !(area > 0.0) {
+        let area = 0.5
+            * (0..4)
+                .map(|i| {
+                    let (a, b) = (corners[i], corners[(i + 1) % 4]);
+                    a[0] * b[1] - b[0] * a[1]
+                })
+                .sum::<f64>();
+        if area.is_nan() || area <= 0.0 {
             return Err(GeometryError::Clockwise { area });
         }
         let mut edges = Vec::with_capacity(4);
@@ -146,13 +208,21 @@ impl Block {
                 EdgeShape::ArcAbout(c) => Curve::arc_through(a, b, *c, e)?,
             });
         }
-        let block = Block { corners, edges: [edges[0].clone(), edges[1].clone(), edges[2].clone(), edges[3].clone()] };
+        let block = Block {
+            corners,
+            edges: [
+                edges[0].clone(),
+                edges[1].clone(),
+                edges[2].clone(),
+                edges[3].clone(),
+            ],
+        };
         for i in 0..9 {
             for j in 0..9 {
                 let (u, v) = (i as f64 / 8.0, j as f64 / 8.0);
                 let jac = block.jacobian(u, v);
                 let det = jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
-                if !(det > 0.0) {
+                if det.is_nan() || det <= 0.0 {
                     return Err(GeometryError::FoldedMap { det, u, v });
                 }
             }
@@ -176,7 +246,10 @@ impl Block {
         let mut x = [0.0; 2];
         for d in 0..2 {
             x[d] = (1.0 - v) * bottom[d] + v * top[d] + (1.0 - u) * left[d] + u * right[d]
-                - ((1.0 - u) * (1.0 - v) * c[0][d] + u * (1.0 - v) * c[1][d] + u * v * c[2][d] + (1.0 - u) * v * c[3][d]);
+                - ((1.0 - u) * (1.0 - v) * c[0][d]
+                    + u * (1.0 - v) * c[1][d]
+                    + u * v * c[2][d]
+                    + (1.0 - u) * v * c[3][d]);
         }
         x
     }
@@ -186,8 +259,14 @@ impl Block {
         let c = &self.corners;
         let (bottom, db) = (self.edges[0].point(u), self.edges[0].derivative(u));
         let (right, dr) = (self.edges[1].point(v), self.edges[1].derivative(v));
-        let (top, dt) = (self.edges[2].point(1.0 - u), self.edges[2].derivative(1.0 - u));
-        let (left, dl) = (self.edges[3].point(1.0 - v), self.edges[3].derivative(1.0 - v));
+        let (top, dt) = (
+            self.edges[2].point(1.0 - u),
+            self.edges[2].derivative(1.0 - u),
+        );
+        let (left, dl) = (
+            self.edges[3].point(1.0 - v),
+            self.edges[3].derivative(1.0 - v),
+        );
         let mut j = [[0.0; 2]; 2];
         for d in 0..2 {
             j[d][0] = (1.0 - v) * db[d] - v * dt[d] - left[d] + right[d]
@@ -200,8 +279,19 @@ impl Block {
 
     /// Inverse map by damped Newton iteration: `Some((u, v))` if `x` lies in the block.
     pub fn inverse(&self, x: Point) -> Option<(f64, f64)> {
-        let size = self.edges.iter().map(|e| e.length()).fold(0.0, f64::max).max(1e-300);
-        for &(u0, v0) in &[(0.5, 0.5), (0.25, 0.25), (0.75, 0.25), (0.75, 0.75), (0.25, 0.75)] {
+        let size = self
+            .edges
+            .iter()
+            .map(|e| e.length())
+            .fold(0.0, f64::max)
+            .max(1e-300);
+        for &(u0, v0) in &[
+            (0.5, 0.5),
+            (0.25, 0.25),
+            (0.75, 0.25),
+            (0.75, 0.75),
+            (0.25, 0.75),
+        ] {
             let (mut u, mut v) = (u0, v0);
             for _ in 0..60 {
                 let y = self.map(u, v);
@@ -237,17 +327,38 @@ mod tests {
 
     fn quarter_ring() -> Block {
         let o = [0.0, 0.0];
-        Block::new([[100.0, 0.0], [200.0, 0.0], [0.0, 200.0], [0.0, 100.0]], [EdgeShape::Straight, EdgeShape::ArcAbout(o), EdgeShape::Straight, EdgeShape::ArcAbout(o)]).unwrap()
+        Block::new(
+            [[100.0, 0.0], [200.0, 0.0], [0.0, 200.0], [0.0, 100.0]],
+            [
+                EdgeShape::Straight,
+                EdgeShape::ArcAbout(o),
+                EdgeShape::Straight,
+                EdgeShape::ArcAbout(o),
+            ],
+        )
+        .unwrap()
     }
 
     #[test]
     fn straight_block_map_is_bilinear() {
         let c = [[0.0, 0.0], [5.0, 0.0], [5.7, 4.4], [0.0, 5.0]];
-        let b = Block::new(c, [EdgeShape::Straight, EdgeShape::Straight, EdgeShape::Straight, EdgeShape::Straight]).unwrap();
+        let b = Block::new(
+            c,
+            [
+                EdgeShape::Straight,
+                EdgeShape::Straight,
+                EdgeShape::Straight,
+                EdgeShape::Straight,
+            ],
+        )
+        .unwrap();
         for &(u, v) in &[(0.3, 0.7), (0.9, 0.1), (0.5, 0.5)] {
             let x = b.map(u, v);
             for d in 0..2 {
-                let bl = (1.0 - u) * (1.0 - v) * c[0][d] + u * (1.0 - v) * c[1][d] + u * v * c[2][d] + (1.0 - u) * v * c[3][d];
+                let bl = (1.0 - u) * (1.0 - v) * c[0][d]
+                    + u * (1.0 - v) * c[1][d]
+                    + u * v * c[2][d]
+                    + (1.0 - u) * v * c[3][d];
                 // Same formula, different rounding: a few ulps of the 5 mm coordinates.
                 assert!((x[d] - bl).abs() < 1e-13);
             }
@@ -267,20 +378,33 @@ mod tests {
         }
         let (u, v, h) = (0.37, 0.61, 1e-6);
         let j = b.jacobian(u, v);
-        for d in 0..2 {
+        for (d, row) in j.iter().enumerate() {
             let du = (b.map(u + h, v)[d] - b.map(u - h, v)[d]) / (2.0 * h);
             let dv = (b.map(u, v + h)[d] - b.map(u, v - h)[d]) / (2.0 * h);
             // Central differences: O(h²) truncation and O(ε/h) round-off on 200 mm coordinates.
-            assert!((du - j[d][0]).abs() < 1e-6 && (dv - j[d][1]).abs() < 1e-6);
+            assert!((du - row[0]).abs() < 1e-6 && (dv - row[1]).abs() < 1e-6);
         }
     }
 
     #[test]
     fn errors_are_reported() {
-        let s = [EdgeShape::Straight, EdgeShape::Straight, EdgeShape::Straight, EdgeShape::Straight];
+        let s = [
+            EdgeShape::Straight,
+            EdgeShape::Straight,
+            EdgeShape::Straight,
+            EdgeShape::Straight,
+        ];
         let cw = Block::new([[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]], s.clone());
         assert!(matches!(cw, Err(GeometryError::Clockwise { .. })));
-        let bad = Block::new([[100.0, 0.0], [200.0, 0.0], [0.0, 201.0], [0.0, 100.0]], [EdgeShape::Straight, EdgeShape::ArcAbout([0.0, 0.0]), EdgeShape::Straight, EdgeShape::Straight]);
+        let bad = Block::new(
+            [[100.0, 0.0], [200.0, 0.0], [0.0, 201.0], [0.0, 100.0]],
+            [
+                EdgeShape::Straight,
+                EdgeShape::ArcAbout([0.0, 0.0]),
+                EdgeShape::Straight,
+                EdgeShape::Straight,
+            ],
+        );
         assert!(matches!(bad, Err(GeometryError::ArcRadiusMismatch { .. })));
     }
 

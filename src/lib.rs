@@ -25,21 +25,21 @@
 //!
 //! Units everywhere: mm, N, MPa (N/mm²), s.
 
-pub mod quadrature;
 pub mod basis;
-pub mod geometry;
-pub mod mesh;
-pub mod material;
-pub mod dofs;
-pub mod elasticity;
-pub mod loads;
-pub mod fields;
-pub mod problem;
-pub mod dense;
-pub mod lemke;
-pub mod contact;
 pub mod complementarity;
-pub mod wear;
-pub mod examples;
-pub mod output;
+pub mod contact;
+pub mod dense;
+pub mod dofs;
 pub mod driver;
+pub mod elasticity;
+pub mod examples;
+pub mod fields;
+pub mod geometry;
+pub mod lemke;
+pub mod loads;
+pub mod material;
+pub mod mesh;
+pub mod output;
+pub mod problem;
+pub mod quadrature;
+pub mod wear;

@@ -36,7 +36,13 @@ pub struct Traction {
 
 /// Edge-trace dofs of one element edge: for each of the p + 1 trace functions (start vertex,
 /// end vertex, degrees 2..=p, the order of [`shape_1d`]) the global x and z dofs and the sign.
-pub fn trace_dofs(dofs: &DofMap, mesh: &Mesh, basis: &crate::basis::QuadBasis, element: usize, local: usize) -> Vec<([usize; 2], f64)> {
+pub fn trace_dofs(
+    dofs: &DofMap,
+    mesh: &Mesh,
+    basis: &crate::basis::QuadBasis,
+    element: usize,
+    local: usize,
+) -> Vec<([usize; 2], f64)> {
     let ed = dofs.element_dofs(mesh, element);
     basis
         .edge_trace(local)
@@ -47,7 +53,13 @@ pub fn trace_dofs(dofs: &DofMap, mesh: &Mesh, basis: &crate::basis::QuadBasis, e
 
 /// Gauss points on the part of local edge `local` inside `window`: (t, ds) with t the edge
 /// parameter and ds the arc-length weight (mm).
-pub fn edge_quadrature(mesh: &Mesh, element: usize, local: usize, window: Option<Window>, n: usize) -> Vec<(f64, f64)> {
+pub fn edge_quadrature(
+    mesh: &Mesh,
+    element: usize,
+    local: usize,
+    window: Option<Window>,
+    n: usize,
+) -> Vec<(f64, f64)> {
     let (t0, t1) = match window {
         None => (-1.0, 1.0),
         Some(w) => match window_interval(mesh, element, local, w) {
@@ -95,8 +107,20 @@ fn window_interval(mesh: &Mesh, element: usize, local: usize, w: Window) -> Opti
     if cmax <= a || cmin >= b {
         return None;
     }
-    let ta = if cmin < a { crossing(a) } else if increasing { -1.0 } else { 1.0 };
-    let tb = if cmax > b { crossing(b) } else if increasing { 1.0 } else { -1.0 };
+    let ta = if cmin < a {
+        crossing(a)
+    } else if increasing {
+        -1.0
+    } else {
+        1.0
+    };
+    let tb = if cmax > b {
+        crossing(b)
+    } else if increasing {
+        1.0
+    } else {
+        -1.0
+    };
     let (lo, hi) = (ta.min(tb), ta.max(tb));
     (hi > lo).then_some((lo, hi))
 }
@@ -105,17 +129,29 @@ impl Traction {
     /// Traction vector T (MPa) at point `x` with outward unit normal `normal`.
     pub fn vector(&self, x: Point, normal: Point) -> Point {
         let s = match self.window {
-            Some(w) if w.range[1] > w.range[0] => ((x[w.axis] - w.range[0]) / (w.range[1] - w.range[0])).clamp(0.0, 1.0),
+            Some(w) if w.range[1] > w.range[0] => {
+                ((x[w.axis] - w.range[0]) / (w.range[1] - w.range[0])).clamp(0.0, 1.0)
+            }
             _ => 0.0,
         };
         let p = self.normal[0] + s * (self.normal[1] - self.normal[0]);
         let q = self.shear[0] + s * (self.shear[1] - self.shear[0]);
         let tangent = [-normal[1], normal[0]];
-        [-p * normal[0] + q * tangent[0], -p * normal[1] + q * tangent[1]]
+        [
+            -p * normal[0] + q * tangent[0],
+            -p * normal[1] + q * tangent[1],
+        ]
     }
 
     /// Visit every quadrature point of this traction: (element, local edge, t, x, T, dS·thickness).
-    pub fn for_each_point(&self, mesh: &Mesh, edges: &[(usize, usize)], p: usize, thickness: f64, mut visit: impl FnMut(usize, usize, f64, Point, Point, f64)) {
+    pub fn for_each_point(
+        &self,
+        mesh: &Mesh,
+        edges: &[(usize, usize)],
+        p: usize,
+        thickness: f64,
+        mut visit: impl FnMut(usize, usize, f64, Point, Point, f64),
+    ) {
         for &(element, local) in edges {
             for (t, ds) in edge_quadrature(mesh, element, local, self.window, p + 4) {
                 let x = mesh.point_on_edge(element, local, t);
@@ -126,7 +162,14 @@ impl Traction {
     }
 
     /// Resultant force (N) and its moment about `pivot` (N·mm, about +y: M = Δz F_x − Δx F_z).
-    pub fn resultant(&self, mesh: &Mesh, edges: &[(usize, usize)], p: usize, thickness: f64, pivot: Point) -> (Point, f64) {
+    pub fn resultant(
+        &self,
+        mesh: &Mesh,
+        edges: &[(usize, usize)],
+        p: usize,
+        thickness: f64,
+        pivot: Point,
+    ) -> (Point, f64) {
         let mut force = [0.0; 2];
         let mut moment = 0.0;
         self.for_each_point(mesh, edges, p, thickness, |_, _, _, x, t, w| {
@@ -138,22 +181,41 @@ impl Traction {
     }
 
     /// Add the consistent nodal forces of this traction to `load` (N per global dof).
-    pub fn add_to_load(&self, mesh: &Mesh, edges: &[(usize, usize)], dofs: &DofMap, basis: &crate::basis::QuadBasis, thickness: f64, load: &mut [f64]) {
+    pub fn add_to_load(
+        &self,
+        mesh: &Mesh,
+        edges: &[(usize, usize)],
+        dofs: &DofMap,
+        basis: &crate::basis::QuadBasis,
+        thickness: f64,
+        load: &mut [f64],
+    ) {
         let p = dofs.p;
         let mut values = vec![0.0; p + 1];
         let mut derivatives = vec![0.0; p + 1];
-        let mut last: Option<(usize, usize, Vec<([usize; 2], f64)>)> = None;
-        self.for_each_point(mesh, edges, p, thickness, |element, local, t, _, traction, w| {
-            if last.as_ref().map(|l| (l.0, l.1)) != Some((element, local)) {
-                last = Some((element, local, trace_dofs(dofs, mesh, basis, element, local)));
-            }
-            let trace = &last.as_ref().unwrap().2;
-            shape_1d(p, t, &mut values, &mut derivatives);
-            for (k, (g, sign)) in trace.iter().enumerate() {
-                for c in 0..2 {
-                    load[g[c]] += sign * values[k] * traction[c] * w;
+        type EdgeTrace = (usize, usize, Vec<([usize; 2], f64)>);
+        let mut last: Option<EdgeTrace> = None;
+        self.for_each_point(
+            mesh,
+            edges,
+            p,
+            thickness,
+            |element, local, t, _, traction, w| {
+                if last.as_ref().map(|l| (l.0, l.1)) != Some((element, local)) {
+                    last = Some((
+                        element,
+                        local,
+                        trace_dofs(dofs, mesh, basis, element, local),
+                    ));
                 }
-            }
-        });
+                let trace = &last.as_ref().unwrap().2;
+                shape_1d(p, t, &mut values, &mut derivatives);
+                for (k, (g, sign)) in trace.iter().enumerate() {
+                    for c in 0..2 {
+                        load[g[c]] += sign * values[k] * traction[c] * w;
+                    }
+                }
+            },
+        );
     }
 }

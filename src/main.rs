@@ -11,7 +11,11 @@ use wearfem::output::{number, write_csv, write_json};
 use wearfem::problem::Problem;
 
 #[derive(Parser)]
-#[command(name = "wearfem", version, about = "Steady sliding wear by p-version finite elements (mm, N, MPa, s)")]
+#[command(
+    name = "wearfem",
+    version,
+    about = "Steady sliding wear by p-version finite elements (mm, N, MPa, s)"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -75,39 +79,71 @@ impl From<wearfem::output::OutputError> for Failure {
 
 fn load(name: &str) -> Result<Problem, Failure> {
     let (text, file) = if Path::new(name).exists() {
-        let text = std::fs::read_to_string(name).map_err(|e| Failure::Input(format!("{name}: cannot read: {e}")))?;
+        let text = std::fs::read_to_string(name)
+            .map_err(|e| Failure::Input(format!("{name}: cannot read: {e}")))?;
         (text, name.to_string())
     } else if let Some(text) = wearfem::examples::example(name) {
         (text.to_string(), format!("built-in example {name}"))
     } else {
         let names: Vec<&str> = EXAMPLES.iter().map(|e| e.0).collect();
-        return Err(Failure::Input(format!("{name}: no such file, and no built-in example of that name (examples: {})", names.join(", "))));
+        return Err(Failure::Input(format!(
+            "{name}: no such file, and no built-in example of that name (examples: {})",
+            names.join(", ")
+        )));
     };
     Problem::from_toml(&text, &file).map_err(|e| Failure::Input(e.to_string()))
 }
 
 fn run(cli: Cli) -> Result<(), Failure> {
-    let command = cli.command.unwrap_or(Command::Run { problem: None, out: PathBuf::from("out"), steps: None });
+    let command = cli.command.unwrap_or(Command::Run {
+        problem: None,
+        out: PathBuf::from("out"),
+        steps: None,
+    });
     match command {
         Command::Elastic { problem, out } => {
             let p = load(&problem)?;
             let summary = driver::elastic(&p)?;
             write_json(&out, "summary.json", &summary)?;
-            println!("{}: {} dofs, strain energy {:.9e} N·mm → {}", p.file, summary["dofs"], summary["strain_energy"].as_f64().unwrap_or(f64::NAN), out.join("summary.json").display());
+            println!(
+                "{}: {} dofs, strain energy {:.9e} N·mm → {}",
+                p.file,
+                summary["dofs"],
+                summary["strain_energy"].as_f64().unwrap_or(f64::NAN),
+                out.join("summary.json").display()
+            );
         }
         Command::Contact { problem, out } => {
             let p = load(&problem)?;
             let (summary, contact, solution, info) = driver::contact(&p)?;
             write_json(&out, "summary.json", &summary)?;
-            let rows: Vec<Vec<Value>> = (0..contact.len()).map(|i| vec![number(contact.points.x[i][0]), number(contact.points.x[i][1]), number(solution.pressure[i]), number(solution.gap[i])]).collect();
-            write_csv(&out, "contact.csv", &["x_mm", "z_mm", "pressure_MPa", "gap_mm"], &rows)?;
+            let rows: Vec<Vec<Value>> = (0..contact.len())
+                .map(|i| {
+                    vec![
+                        number(contact.points.x[i][0]),
+                        number(contact.points.x[i][1]),
+                        number(solution.pressure[i]),
+                        number(solution.gap[i]),
+                    ]
+                })
+                .collect();
+            write_csv(
+                &out,
+                "contact.csv",
+                &["x_mm", "z_mm", "pressure_MPa", "gap_mm"],
+                &rows,
+            )?;
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
             println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
             if info.status == wearfem::complementarity::Status::Failed {
                 return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}); the last iterate was written", info.complementarity)));
             }
         }
-        Command::Run { problem, out, steps } => {
+        Command::Run {
+            problem,
+            out,
+            steps,
+        } => {
             let name = problem.unwrap_or_else(|| "punch-b40".to_string());
             let p = load(&name)?;
             let total = steps.or(p.spec.wear.as_ref().map(|w| w.steps)).unwrap_or(0);
@@ -121,18 +157,65 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let summary = result.summary(&p);
             write_json(&out, "summary.json", &summary)?;
             let h = &result.history;
-            let mut header = vec!["step".to_string(), "half_period".into(), "direction".into(), "k".into(), "iterations".into(), "criterion_percent".into(), "dissipation_Nmm".into(), "delta_w_mm".into()];
+            let mut header = vec![
+                "step".to_string(),
+                "half_period".into(),
+                "direction".into(),
+                "k".into(),
+                "iterations".into(),
+                "criterion_percent".into(),
+                "dissipation_Nmm".into(),
+                "delta_w_mm".into(),
+            ];
             header.extend(result.probes.iter().map(|(n, _)| format!("p_{n}_MPa")));
-            let rows: Vec<Vec<Value>> = h.steps.iter().map(|s| {
-                let mut r = vec![json!(s.step), json!(s.half_period), json!(s.direction), json!(s.k), json!(s.iterations), number(s.criterion), number(s.dissipation), number(s.delta_w)];
-                r.extend(s.probes.iter().map(|&v| number(v)));
-                r
-            }).collect();
+            let rows: Vec<Vec<Value>> = h
+                .steps
+                .iter()
+                .map(|s| {
+                    let mut r = vec![
+                        json!(s.step),
+                        json!(s.half_period),
+                        json!(s.direction),
+                        json!(s.k),
+                        json!(s.iterations),
+                        number(s.criterion),
+                        number(s.dissipation),
+                        number(s.delta_w),
+                    ];
+                    r.extend(s.probes.iter().map(|&v| number(v)));
+                    r
+                })
+                .collect();
             let header_refs: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
             write_csv(&out, "history.csv", &header_refs, &rows)?;
-            let rows: Vec<Vec<Value>> = (0..result.contact.len()).map(|i| vec![number(result.contact.points.x[i][0]), number(h.p_plus[i]), number(h.p_minus[i]), number(h.p_plus[i] + h.p_minus[i]), number(h.shape[i])]).collect();
-            write_csv(&out, "final.csv", &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"], &rows)?;
-            let probe_text: Vec<String> = result.probes.iter().enumerate().map(|(k, (n, _))| format!("p({n}) = {:.4} MPa", h.steps.last().map_or(f64::NAN, |s| s.probes[k]))).collect();
+            let rows: Vec<Vec<Value>> = (0..result.contact.len())
+                .map(|i| {
+                    vec![
+                        number(result.contact.points.x[i][0]),
+                        number(h.p_plus[i]),
+                        number(h.p_minus[i]),
+                        number(h.p_plus[i] + h.p_minus[i]),
+                        number(h.shape[i]),
+                    ]
+                })
+                .collect();
+            write_csv(
+                &out,
+                "final.csv",
+                &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"],
+                &rows,
+            )?;
+            let probe_text: Vec<String> = result
+                .probes
+                .iter()
+                .enumerate()
+                .map(|(k, (n, _))| {
+                    format!(
+                        "p({n}) = {:.4} MPa",
+                        h.steps.last().map_or(f64::NAN, |s| s.probes[k])
+                    )
+                })
+                .collect();
             println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
             if h.failed_solves > 0 || h.unconverged_steps > 0 {
                 return Err(Failure::Compute(format!("{} contact solves failed and {} steps missed criterion eq. 27; results kept in {}", h.failed_solves, h.unconverged_steps, out.display())));
@@ -141,13 +224,21 @@ fn run(cli: Cli) -> Result<(), Failure> {
         Command::Examples { action, name } => match (action.as_deref(), name) {
             (None, _) => {
                 for (n, text) in EXAMPLES {
-                    let title = text.lines().find_map(|l| l.strip_prefix("title = ")).unwrap_or("").trim_matches('"');
+                    let title = text
+                        .lines()
+                        .find_map(|l| l.strip_prefix("title = "))
+                        .unwrap_or("")
+                        .trim_matches('"');
                     println!("{n:22} {title}");
                 }
             }
             (Some("show"), Some(n)) => match wearfem::examples::example(&n) {
                 Some(text) => print!("{text}"),
-                None => return Err(Failure::Input(format!("{n}: no built-in example of that name"))),
+                None => {
+                    return Err(Failure::Input(format!(
+                        "{n}: no built-in example of that name"
+                    )))
+                }
             },
             _ => return Err(Failure::Input("usage: wearfem examples [show NAME]".into())),
         },

@@ -31,7 +31,10 @@ impl Material {
     /// Lamé parameters (λ, μ), MPa.
     pub fn lame_parameters(&self) -> (f64, f64) {
         let (e, nu) = (self.young, self.poisson);
-        (e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), e / (2.0 * (1.0 + nu)))
+        (
+            e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)),
+            e / (2.0 * (1.0 + nu)),
+        )
     }
 
     /// Constitutive matrix D (MPa) with σ = D ε for the strain vector (ε_xx, ε_zz, γ_xz).
@@ -66,7 +69,10 @@ mod tests {
 
     #[test]
     fn plane_strain_matches_lame_form() {
-        let m = Material { young: 2.0e5, poisson: 0.3 };
+        let m = Material {
+            young: 2.0e5,
+            poisson: 0.3,
+        };
         let d = m.constitutive(Analysis::PlaneStrain { thickness: 1.0 });
         let (l, mu) = m.lame_parameters();
         // Exact algebra: only round-off of a few operations.
@@ -76,7 +82,10 @@ mod tests {
 
     #[test]
     fn plane_stress_uniaxial_gives_young() {
-        let m = Material { young: 1.3e5, poisson: 0.23 };
+        let m = Material {
+            young: 1.3e5,
+            poisson: 0.23,
+        };
         let d = m.constitutive(Analysis::PlaneStress { thickness: 10.0 });
         // σ_zz = 0 ⇒ ε_zz = −ν ε_xx ⇒ σ_xx = E ε_xx.
         let sxx = d[0][0] - d[0][1] * d[1][0] / d[1][1];

@@ -12,7 +12,9 @@ use std::collections::HashMap;
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]
 pub enum MeshError {
     /// Mesh lines must start at 0, end at 1 and increase strictly.
-    #[error("block {block}: mesh lines along {direction} must rise strictly from 0 to 1, got {lines:?}")]
+    #[error(
+        "block {block}: mesh lines along {direction} must rise strictly from 0 to 1, got {lines:?}"
+    )]
     BadLines {
         block: usize,
         direction: &'static str,
@@ -23,7 +25,11 @@ pub enum MeshError {
     Hanging { x: f64, z: f64 },
     /// An element folds over (non-positive Jacobian) somewhere.
     #[error("element {element} of block {block} is folded (Jacobian determinant {det})")]
-    Folded { element: usize, block: usize, det: f64 },
+    Folded {
+        element: usize,
+        block: usize,
+        det: f64,
+    },
 }
 
 /// One block of a body with its mesh lines, material and edge names.
@@ -158,8 +164,9 @@ impl Mesh {
                     }
                     // Local edge e of an element on the block boundary is block edge e.
                     let on_boundary = [j == 0, i == nu - 1, j == nv - 1, i == 0];
-                    for e in 0..4 {
-                        if let (true, Some(name)) = (on_boundary[e], &mb.edge_names[e]) {
+                    for (e, (&boundary, name)) in on_boundary.iter().zip(&mb.edge_names).enumerate()
+                    {
+                        if let (true, Some(name)) = (boundary, name) {
                             mesh.named_edges
                                 .entry(name.clone())
                                 .or_default()
@@ -223,7 +230,11 @@ impl Mesh {
 
     /// A boundary edge (one element) that has a mesh vertex in its interior betrays a hanging node.
     fn check_conforming(&self, tolerance: f64) -> Result<(), MeshError> {
-        let boundary: Vec<&MeshEdge> = self.edges.iter().filter(|e| e.elements.len() == 1).collect();
+        let boundary: Vec<&MeshEdge> = self
+            .edges
+            .iter()
+            .filter(|e| e.elements.len() == 1)
+            .collect();
         for edge in &boundary {
             let (element, local) = edge.elements[0];
             let samples: Vec<Point> = (1..8)
@@ -275,7 +286,10 @@ impl Mesh {
         let jb = self.blocks[el.block].block.jacobian(u, v);
         let su = 0.5 * (el.u[1] - el.u[0]);
         let sv = 0.5 * (el.v[1] - el.v[0]);
-        let j = [[jb[0][0] * su, jb[0][1] * sv], [jb[1][0] * su, jb[1][1] * sv]];
+        let j = [
+            [jb[0][0] * su, jb[0][1] * sv],
+            [jb[1][0] * su, jb[1][1] * sv],
+        ];
         (j, j[0][0] * j[1][1] - j[0][1] * j[1][0])
     }
 
@@ -316,7 +330,10 @@ impl Mesh {
             let block = &self.blocks[el.block].block;
             if let Some((u, v)) = block.inverse(x) {
                 let tol = 1e-9;
-                if u >= el.u[0] - tol && u <= el.u[1] + tol && v >= el.v[0] - tol && v <= el.v[1] + tol
+                if u >= el.u[0] - tol
+                    && u <= el.u[1] + tol
+                    && v >= el.v[0] - tol
+                    && v <= el.v[1] + tol
                 {
                     let xi = 2.0 * (u - el.u[0]) / (el.u[1] - el.u[0]) - 1.0;
                     let eta = 2.0 * (v - el.v[0]) / (el.v[1] - el.v[0]) - 1.0;

@@ -17,7 +17,10 @@ pub struct OutputError {
 }
 
 fn io(path: &Path) -> impl Fn(std::io::Error) -> OutputError + '_ {
-    move |source| OutputError { path: path.display().to_string(), source }
+    move |source| OutputError {
+        path: path.display().to_string(),
+        source,
+    }
 }
 
 /// Write `value` as pretty JSON to `dir/name`, creating `dir`.
@@ -29,7 +32,12 @@ pub fn write_json(dir: &Path, name: &str, value: &Value) -> Result<(), OutputErr
 }
 
 /// Write a CSV file with a header and rows of numbers or strings.
-pub fn write_csv(dir: &Path, name: &str, header: &[&str], rows: &[Vec<Value>]) -> Result<(), OutputError> {
+pub fn write_csv(
+    dir: &Path,
+    name: &str,
+    header: &[&str],
+    rows: &[Vec<Value>],
+) -> Result<(), OutputError> {
     fs::create_dir_all(dir).map_err(io(dir))?;
     let path = dir.join(name);
     let mut file = std::io::BufWriter::new(fs::File::create(&path).map_err(io(&path))?);

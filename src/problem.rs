@@ -239,7 +239,11 @@ pub struct Problem {
 impl Problem {
     /// Make an error for key `key` of this file.
     pub fn error(&self, key: impl Into<String>, message: impl Into<String>) -> ProblemError {
-        ProblemError { file: self.file.clone(), key: key.into(), message: message.into() }
+        ProblemError {
+            file: self.file.clone(),
+            key: key.into(),
+            message: message.into(),
+        }
     }
 
     /// Parse and validate a problem file's text.
@@ -247,38 +251,78 @@ impl Problem {
         let spec: ProblemSpec = toml::from_str(text).map_err(|e| {
             let message = e.message().to_string();
             let key = match e.span() {
-                Some(span) => format!("line {}", text[..span.start.min(text.len())].lines().count().max(1)),
+                Some(span) => format!(
+                    "line {}",
+                    text[..span.start.min(text.len())].lines().count().max(1)
+                ),
                 None => "(file)".into(),
             };
-            ProblemError { file: file.into(), key, message }
+            ProblemError {
+                file: file.into(),
+                key,
+                message,
+            }
         })?;
-        let err = |key: &str, message: String| ProblemError { file: file.into(), key: key.into(), message };
+        let err = |key: &str, message: String| ProblemError {
+            file: file.into(),
+            key: key.into(),
+            message,
+        };
         let a = &spec.analysis;
         if !(a.thickness.is_finite() && a.thickness > 0.0) {
-            return Err(err("analysis.thickness", format!("must be a positive length in mm, got {}", a.thickness)));
+            return Err(err(
+                "analysis.thickness",
+                format!("must be a positive length in mm, got {}", a.thickness),
+            ));
         }
         let analysis = match a.kind.as_str() {
-            "plane_stress" => Analysis::PlaneStress { thickness: a.thickness },
-            "plane_strain" => Analysis::PlaneStrain { thickness: a.thickness },
-            other => return Err(err("analysis.kind", format!("must be \"plane_stress\" or \"plane_strain\", got \"{other}\""))),
+            "plane_stress" => Analysis::PlaneStress {
+                thickness: a.thickness,
+            },
+            "plane_strain" => Analysis::PlaneStrain {
+                thickness: a.thickness,
+            },
+            other => {
+                return Err(err(
+                    "analysis.kind",
+                    format!("must be \"plane_stress\" or \"plane_strain\", got \"{other}\""),
+                ))
+            }
         };
         if a.p == 0 || a.p > 20 {
-            return Err(err("analysis.p", format!("polynomial degree must be 1..=20, got {}", a.p)));
+            return Err(err(
+                "analysis.p",
+                format!("polynomial degree must be 1..=20, got {}", a.p),
+            ));
         }
         let space = match a.space.as_str() {
             "tensor" => Space::TensorProduct,
             "trunk" => Space::Trunk,
-            other => return Err(err("analysis.space", format!("must be \"tensor\" or \"trunk\", got \"{other}\""))),
+            other => {
+                return Err(err(
+                    "analysis.space",
+                    format!("must be \"tensor\" or \"trunk\", got \"{other}\""),
+                ))
+            }
         };
         let mut materials = Vec::new();
         for (name, m) in &spec.materials {
             if !(m.young.is_finite() && m.young > 0.0) {
-                return Err(err(&format!("materials.{name}.young"), format!("Young's modulus must be positive (MPa), got {}", m.young)));
+                return Err(err(
+                    &format!("materials.{name}.young"),
+                    format!("Young's modulus must be positive (MPa), got {}", m.young),
+                ));
             }
             if !(m.poisson.is_finite() && m.poisson > -1.0 && m.poisson < 0.5) {
-                return Err(err(&format!("materials.{name}.poisson"), format!("Poisson's ratio must lie in (-1, 0.5), got {}", m.poisson)));
+                return Err(err(
+                    &format!("materials.{name}.poisson"),
+                    format!("Poisson's ratio must lie in (-1, 0.5), got {}", m.poisson),
+                ));
             }
-            materials.push(Material { young: m.young, poisson: m.poisson });
+            materials.push(Material {
+                young: m.young,
+                poisson: m.poisson,
+            });
         }
         if spec.bodies.is_empty() {
             return Err(err("bodies", "at least one body is needed".into()));
@@ -294,7 +338,12 @@ impl Problem {
             problem.mesh(b)?;
         }
         for (name, probe) in &problem.spec.probes {
-            problem.body_index(&probe.body).map_err(|_| problem.error(format!("probes.{name}.body"), format!("no body named \"{}\"", probe.body)))?;
+            problem.body_index(&probe.body).map_err(|_| {
+                problem.error(
+                    format!("probes.{name}.body"),
+                    format!("no body named \"{}\"", probe.body),
+                )
+            })?;
         }
         Ok(problem)
     }
@@ -315,25 +364,42 @@ impl Problem {
         let mut blocks = Vec::new();
         for (k, bs) in body.blocks.iter().enumerate() {
             let key = |field: &str| format!("bodies[{b}].blocks[{k}].{field}");
-            let mut shapes = [EdgeShape::Straight, EdgeShape::Straight, EdgeShape::Straight, EdgeShape::Straight];
+            let mut shapes = [
+                EdgeShape::Straight,
+                EdgeShape::Straight,
+                EdgeShape::Straight,
+                EdgeShape::Straight,
+            ];
             for arc in &bs.arcs {
                 if arc.edge > 3 {
-                    return Err(self.error(key("arcs"), format!("edge must be 0..=3, got {}", arc.edge)));
+                    return Err(
+                        self.error(key("arcs"), format!("edge must be 0..=3, got {}", arc.edge))
+                    );
                 }
                 shapes[arc.edge] = EdgeShape::ArcAbout(arc.center);
             }
             if bs.corners.iter().flatten().any(|c| !c.is_finite()) {
                 return Err(self.error(key("corners"), "coordinates must be finite numbers"));
             }
-            let block = Block::new(bs.corners, shapes).map_err(|e| self.error(key("corners"), e.to_string()))?;
+            let block = Block::new(bs.corners, shapes)
+                .map_err(|e| self.error(key("corners"), e.to_string()))?;
             let material = material_names
                 .iter()
                 .position(|m| **m == bs.material)
-                .ok_or_else(|| self.error(key("material"), format!("no material named \"{}\"", bs.material)))?;
+                .ok_or_else(|| {
+                    self.error(
+                        key("material"),
+                        format!("no material named \"{}\"", bs.material),
+                    )
+                })?;
             let lines = |spec: &LinesSpec, field: &str| -> Result<Vec<f64>, ProblemError> {
                 match spec {
-                    LinesSpec::Count(0) => Err(self.error(key(field), "needs at least one division")),
-                    LinesSpec::Count(n) if *n > 10_000 => Err(self.error(key(field), format!("{n} divisions is too many"))),
+                    LinesSpec::Count(0) => {
+                        Err(self.error(key(field), "needs at least one division"))
+                    }
+                    LinesSpec::Count(n) if *n > 10_000 => {
+                        Err(self.error(key(field), format!("{n} divisions is too many")))
+                    }
                     LinesSpec::Count(n) => Ok((0..=*n).map(|i| i as f64 / *n as f64).collect()),
                     LinesSpec::List(v) => Ok(v.clone()),
                 }
@@ -344,18 +410,37 @@ impl Problem {
                 u_lines: lines(&bs.u, "u")?,
                 v_lines: lines(&bs.v, "v")?,
                 material,
-                edge_names: [n.bottom.clone(), n.right.clone(), n.top.clone(), n.left.clone()],
+                edge_names: [
+                    n.bottom.clone(),
+                    n.right.clone(),
+                    n.top.clone(),
+                    n.left.clone(),
+                ],
             });
         }
         Mesh::build(blocks).map_err(|e| self.error(format!("bodies[{b}].blocks"), e.to_string()))
     }
 
     /// The (element, local edge) list of edge `name` of body `b`.
-    pub fn named_edge<'m>(&self, mesh: &'m Mesh, b: usize, name: &str, key: &str) -> Result<&'m [(usize, usize)], ProblemError> {
+    pub fn named_edge<'m>(
+        &self,
+        mesh: &'m Mesh,
+        b: usize,
+        name: &str,
+        key: &str,
+    ) -> Result<&'m [(usize, usize)], ProblemError> {
         mesh.named_edges
             .get(name)
             .map(|v| v.as_slice())
-            .ok_or_else(|| self.error(key, format!("body \"{}\" has no edge named \"{name}\"", self.spec.bodies[b].name)))
+            .ok_or_else(|| {
+                self.error(
+                    key,
+                    format!(
+                        "body \"{}\" has no edge named \"{name}\"",
+                        self.spec.bodies[b].name
+                    ),
+                )
+            })
     }
 
     /// The tractions of body `b` as library objects.
@@ -365,13 +450,21 @@ impl Problem {
             let key = |f: &str| format!("bodies[{b}].tractions[{k}].{f}");
             let window = match &t.window {
                 None => None,
-                Some(WindowSpec { x: Some(r), z: None }) => Some(Window { axis: 0, range: *r }),
-                Some(WindowSpec { x: None, z: Some(r) }) => Some(Window { axis: 1, range: *r }),
+                Some(WindowSpec {
+                    x: Some(r),
+                    z: None,
+                }) => Some(Window { axis: 0, range: *r }),
+                Some(WindowSpec {
+                    x: None,
+                    z: Some(r),
+                }) => Some(Window { axis: 1, range: *r }),
                 Some(_) => return Err(self.error(key("window"), "give exactly one of x or z")),
             };
             if let Some(w) = window {
                 if !(w.range[0].is_finite() && w.range[1].is_finite() && w.range[1] > w.range[0]) {
-                    return Err(self.error(key("window"), format!("range must rise, got {:?}", w.range)));
+                    return Err(
+                        self.error(key("window"), format!("range must rise, got {:?}", w.range))
+                    );
                 }
             }
             let (normal, shear) = (t.normal.pair(), t.shear.pair());
@@ -381,23 +474,36 @@ impl Problem {
             if window.is_none() && (normal[0] != normal[1] || shear[0] != shear[1]) {
                 return Err(self.error(key("normal"), "a linear variation needs a window"));
             }
-            out.push(Traction { edge: t.edge.clone(), normal, shear, window });
+            out.push(Traction {
+                edge: t.edge.clone(),
+                normal,
+                shear,
+                window,
+            });
         }
         Ok(out)
     }
 
     /// Supports of body `b` as fixed global dofs, plus `extra_clamped` edges held in x and z.
-    pub fn constraints(&self, b: usize, mesh: &Mesh, dofs: &crate::dofs::DofMap, basis: &crate::basis::QuadBasis, extra_clamped: &[&str]) -> Result<Constraints, ProblemError> {
+    pub fn constraints(
+        &self,
+        b: usize,
+        mesh: &Mesh,
+        dofs: &crate::dofs::DofMap,
+        basis: &crate::basis::QuadBasis,
+        extra_clamped: &[&str],
+    ) -> Result<Constraints, ProblemError> {
         let mut fixed = Vec::new();
-        let edge_dofs = |name: &str, comps: &[usize], key: &str| -> Result<Vec<usize>, ProblemError> {
-            let mut out = Vec::new();
-            for &(element, local) in self.named_edge(mesh, b, name, key)? {
-                for (g, _) in crate::loads::trace_dofs(dofs, mesh, basis, element, local) {
-                    out.extend(comps.iter().map(|&c| g[c]));
+        let edge_dofs =
+            |name: &str, comps: &[usize], key: &str| -> Result<Vec<usize>, ProblemError> {
+                let mut out = Vec::new();
+                for &(element, local) in self.named_edge(mesh, b, name, key)? {
+                    for (g, _) in crate::loads::trace_dofs(dofs, mesh, basis, element, local) {
+                        out.extend(comps.iter().map(|&c| g[c]));
+                    }
                 }
-            }
-            Ok(out)
-        };
+                Ok(out)
+            };
         for (k, s) in self.spec.bodies[b].supports.iter().enumerate() {
             let key = format!("bodies[{b}].supports[{k}]");
             let mut comps = Vec::new();
@@ -405,13 +511,25 @@ impl Problem {
                 match c.as_str() {
                     "x" => comps.push(0),
                     "z" => comps.push(1),
-                    other => return Err(self.error(format!("{key}.fix"), format!("components are \"x\" and \"z\", got \"{other}\""))),
+                    other => {
+                        return Err(self.error(
+                            format!("{key}.fix"),
+                            format!("components are \"x\" and \"z\", got \"{other}\""),
+                        ))
+                    }
                 }
             }
             match (&s.edge, s.point) {
-                (Some(edge), None) => fixed.extend(edge_dofs(edge, &comps, &format!("{key}.edge"))?),
+                (Some(edge), None) => {
+                    fixed.extend(edge_dofs(edge, &comps, &format!("{key}.edge"))?)
+                }
                 (None, Some(point)) => {
-                    let v = mesh.vertex_at(point).ok_or_else(|| self.error(format!("{key}.point"), format!("({}, {}) is not a mesh vertex", point[0], point[1])))?;
+                    let v = mesh.vertex_at(point).ok_or_else(|| {
+                        self.error(
+                            format!("{key}.point"),
+                            format!("({}, {}) is not a mesh vertex", point[0], point[1]),
+                        )
+                    })?;
                     fixed.extend(comps.iter().map(|&c| dofs.vertex_dof(v, c)));
                 }
                 _ => return Err(self.error(key, "give exactly one of edge or point")),
@@ -426,25 +544,53 @@ impl Problem {
     }
 
     /// Build, assemble and factorise body `b`; `extra_clamped` edges are held (rigid plate).
-    pub fn elastic_body(&self, b: usize, extra_clamped: &[&str]) -> Result<ElasticBody, ProblemError> {
+    pub fn elastic_body(
+        &self,
+        b: usize,
+        extra_clamped: &[&str],
+    ) -> Result<ElasticBody, ProblemError> {
         let mesh = self.mesh(b)?;
         let dofs = crate::dofs::DofMap::new(&mesh, self.discretisation.p);
         let basis = crate::basis::QuadBasis::new(self.discretisation.p, self.discretisation.space);
         let constraints = self.constraints(b, &mesh, &dofs, &basis, extra_clamped)?;
         let name = &self.spec.bodies[b].name;
-        ElasticBody::new(name, mesh, self.materials.clone(), self.analysis, self.discretisation, &constraints)
-            .map_err(|e| self.error(format!("bodies[{b}].supports"), e.to_string()))
+        ElasticBody::new(
+            name,
+            mesh,
+            self.materials.clone(),
+            self.analysis,
+            self.discretisation,
+            &constraints,
+        )
+        .map_err(|e| self.error(format!("bodies[{b}].supports"), e.to_string()))
     }
 
     /// The global load vector of body `b` from its tractions (edges in `skip` excluded).
-    pub fn load_vector(&self, b: usize, body: &ElasticBody, skip: &[&str]) -> Result<Vec<f64>, ProblemError> {
+    pub fn load_vector(
+        &self,
+        b: usize,
+        body: &ElasticBody,
+        skip: &[&str],
+    ) -> Result<Vec<f64>, ProblemError> {
         let mut load = vec![0.0; body.dofs.n_dofs()];
         for (k, t) in self.tractions(b)?.iter().enumerate() {
             if skip.contains(&t.edge.as_str()) {
                 continue;
             }
-            let edges = self.named_edge(&body.mesh, b, &t.edge, &format!("bodies[{b}].tractions[{k}].edge"))?;
-            t.add_to_load(&body.mesh, edges, &body.dofs, &body.basis, self.analysis.thickness(), &mut load);
+            let edges = self.named_edge(
+                &body.mesh,
+                b,
+                &t.edge,
+                &format!("bodies[{b}].tractions[{k}].edge"),
+            )?;
+            t.add_to_load(
+                &body.mesh,
+                edges,
+                &body.dofs,
+                &body.basis,
+                self.analysis.thickness(),
+                &mut load,
+            );
         }
         Ok(load)
     }

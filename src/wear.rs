@@ -97,30 +97,59 @@ fn default_iterations() -> usize {
 
 /// The paper's schedule (eq. 30): k = 1 for n ≤ 50, 5 for n ≤ 100, 10 after.
 pub fn paper_schedule() -> Vec<ScheduleEntry> {
-    vec![ScheduleEntry { until: Some(50), k: 1 }, ScheduleEntry { until: Some(100), k: 5 }, ScheduleEntry { until: None, k: 10 }]
+    vec![
+        ScheduleEntry {
+            until: Some(50),
+            k: 1,
+        },
+        ScheduleEntry {
+            until: Some(100),
+            k: 5,
+        },
+        ScheduleEntry { until: None, k: 10 },
+    ]
 }
 
 /// Extrapolation factor of step n (1-based).
 pub fn factor(schedule: &[ScheduleEntry], n: usize) -> usize {
-    schedule.iter().find(|e| e.until.is_none_or(|u| n <= u)).map_or(1, |e| e.k)
+    schedule
+        .iter()
+        .find(|e| e.until.is_none_or(|u| n <= u))
+        .map_or(1, |e| e.k)
 }
 
 /// Γ(x) for x > 0 (Lanczos, g = 7, 9 terms: relative error ~1e-15).
 fn gamma(x: f64) -> f64 {
-    const G: [f64; 9] = [0.999_999_999_999_809_9, 676.520_368_121_885_1, -1_259.139_216_722_402_8, 771.323_428_777_653_1, -176.615_029_162_140_6, 12.507_343_278_686_905, -0.138_571_095_265_720_12, 9.984_369_578_019_572e-6, 1.505_632_735_149_311_6e-7];
+    const G: [f64; 9] = [
+        0.999_999_999_999_809_9,
+        676.520_368_121_885_1,
+        -1_259.139_216_722_402_8,
+        771.323_428_777_653_1,
+        -176.615_029_162_140_6,
+        12.507_343_278_686_905,
+        -0.138_571_095_265_720_12,
+        9.984_369_578_019_572e-6,
+        1.505_632_735_149_311_6e-7,
+    ];
     if x < 0.5 {
         return std::f64::consts::PI / ((std::f64::consts::PI * x).sin() * gamma(1.0 - x));
     }
     let x = x - 1.0;
     let t = x + 7.5;
-    let sum: f64 = G[0] + G.iter().enumerate().skip(1).map(|(i, g)| g / (x + i as f64)).sum::<f64>();
+    let sum: f64 = G[0]
+        + G.iter()
+            .enumerate()
+            .skip(1)
+            .map(|(i, g)| g / (x + i as f64))
+            .sum::<f64>();
     (2.0 * std::f64::consts::PI).sqrt() * t.powf(x + 0.5) * (-t).exp() * sum
 }
 
 /// ∫ over one half period of |v|ᵃ dτ for u_τ = −u₀ cos ωτ: (u₀ω)ᵃ/ω · √π Γ((a+1)/2)/Γ(a/2+1)
 /// (mm^a s^(1−a)); equals 2u₀ for a = 1 (paper eq. 11).
 pub fn half_period_sliding(amplitude: f64, omega: f64, a: f64) -> f64 {
-    (amplitude * omega).powf(a) / omega * std::f64::consts::PI.sqrt() * gamma(0.5 * (a + 1.0)) / gamma(0.5 * a + 1.0)
+    (amplitude * omega).powf(a) / omega * std::f64::consts::PI.sqrt() * gamma(0.5 * (a + 1.0))
+        / gamma(0.5 * a + 1.0)
 }
 
 /// The same integral over the sub-interval ωτ ∈ [θ₀, θ₁] ⊂ [0, π] (Gauss–Legendre, 24 points
@@ -131,7 +160,12 @@ pub fn partial_sliding(amplitude: f64, omega: f64, a: f64, theta: [f64; 2]) -> f
     }
     let rule = crate::quadrature::gauss_legendre(24);
     let half = 0.5 * (theta[1] - theta[0]);
-    let sum: f64 = rule.points.iter().zip(&rule.weights).map(|(x, w)| w * (theta[0] + half * (x + 1.0)).sin().powf(a)).sum();
+    let sum: f64 = rule
+        .points
+        .iter()
+        .zip(&rule.weights)
+        .map(|(x, w)| w * (theta[0] + half * (x + 1.0)).sin().powf(a))
+        .sum();
     (amplitude * omega).powf(a) / omega * half * sum
 }
 
@@ -213,10 +247,19 @@ impl WearIntegrator {
         for (name, law) in [("body1", spec.body1), ("body2", spec.body2)] {
             if let Some(l) = law {
                 if !(l.beta.is_finite() && l.beta >= 0.0) {
-                    return bad(&format!("{name}.beta"), format!("must be ≥ 0, got {}", l.beta));
+                    return bad(
+                        &format!("{name}.beta"),
+                        format!("must be ≥ 0, got {}", l.beta),
+                    );
                 }
                 if !(l.a.is_finite() && l.a > 0.0 && l.b.is_finite() && l.b > 0.0) {
-                    return bad(name, format!("exponents a and b must be positive, got a = {}, b = {}", l.a, l.b));
+                    return bad(
+                        name,
+                        format!(
+                            "exponents a and b must be positive, got a = {}, b = {}",
+                            l.a, l.b
+                        ),
+                    );
                 }
                 if l.beta > 0.0 {
                     laws.push(l);
@@ -226,21 +269,45 @@ impl WearIntegrator {
         match spec.sliding.as_str() {
             "reciprocating" => {
                 if !(spec.amplitude > 0.0 && spec.amplitude.is_finite()) {
-                    return bad("amplitude", format!("reciprocating sliding needs u₀ > 0 (mm), got {}", spec.amplitude));
+                    return bad(
+                        "amplitude",
+                        format!(
+                            "reciprocating sliding needs u₀ > 0 (mm), got {}",
+                            spec.amplitude
+                        ),
+                    );
                 }
                 if !(spec.omega > 0.0 && spec.omega.is_finite()) {
-                    return bad("omega", format!("reciprocating sliding needs ω > 0 (rad/s), got {}", spec.omega));
+                    return bad(
+                        "omega",
+                        format!(
+                            "reciprocating sliding needs ω > 0 (rad/s), got {}",
+                            spec.omega
+                        ),
+                    );
                 }
             }
             "monotonic" => {
-                if !(spec.speed > 0.0 && spec.step_time > 0.0 && spec.speed.is_finite() && spec.step_time.is_finite()) {
+                if !(spec.speed > 0.0
+                    && spec.step_time > 0.0
+                    && spec.speed.is_finite()
+                    && spec.step_time.is_finite())
+                {
                     return bad("speed", format!("monotonic sliding needs speed > 0 (mm/s) and step_time > 0 (s), got {} and {}", spec.speed, spec.step_time));
                 }
             }
-            other => return bad("sliding", format!("must be \"reciprocating\" or \"monotonic\", got \"{other}\"")),
+            other => {
+                return bad(
+                    "sliding",
+                    format!("must be \"reciprocating\" or \"monotonic\", got \"{other}\""),
+                )
+            }
         }
         if !(spec.tolerance.is_finite() && spec.tolerance > 0.0) {
-            return bad("tolerance", format!("must be positive (percent), got {}", spec.tolerance));
+            return bad(
+                "tolerance",
+                format!("must be positive (percent), got {}", spec.tolerance),
+            );
         }
         if spec.max_iterations == 0 {
             return bad("max_iterations", "must be at least 1".into());
@@ -249,7 +316,11 @@ impl WearIntegrator {
         if schedule.is_empty() || schedule.iter().any(|e| e.k == 0) {
             return bad("extrapolation", "needs entries with k ≥ 1".into());
         }
-        Ok(WearIntegrator { spec: spec.clone(), schedule, laws })
+        Ok(WearIntegrator {
+            spec: spec.clone(),
+            schedule,
+            laws,
+        })
     }
 
     /// Sliding integral ∫|v|ᵃ dτ of one half period (or one monotonic step).
@@ -273,7 +344,14 @@ impl WearIntegrator {
 
     /// Run the integration from shape `initial` (mm), reporting probes at `probe_points`
     /// (indices into the contact points). `on_step` sees every record as it is made.
-    pub fn run(&self, solver: &mut ContactSolver, contact: &CondensedContact, initial: &[f64], probe_points: &[usize], mut on_step: impl FnMut(&StepRecord)) -> WearHistory {
+    pub fn run(
+        &self,
+        solver: &mut ContactSolver,
+        contact: &CondensedContact,
+        initial: &[f64],
+        probe_points: &[usize],
+        mut on_step: impl FnMut(&StepRecord),
+    ) -> WearHistory {
         let points = &contact.points;
         let n = points.x.len();
         let sliding: Vec<f64> = self.laws.iter().map(|l| self.sliding(l.a)).collect();
@@ -284,13 +362,34 @@ impl WearIntegrator {
         let mut new_increment = vec![0.0; n];
         let mut cycle_wear = vec![0.0; n];
         let mut sol = ContactSolution::default();
-        let mut hist = WearHistory { steps: Vec::with_capacity(self.spec.steps), snapshots: vec![], p_plus: vec![0.0; n], p_minus: vec![0.0; n], shape: vec![], solves: 0, unconverged_steps: 0, failed_solves: 0 };
+        let mut hist = WearHistory {
+            steps: Vec::with_capacity(self.spec.steps),
+            snapshots: vec![],
+            p_plus: vec![0.0; n],
+            p_minus: vec![0.0; n],
+            shape: vec![],
+            solves: 0,
+            unconverged_steps: 0,
+            failed_solves: 0,
+        };
         let monotonic = self.spec.sliding == "monotonic";
-        let zero_at = self.spec.shape_zero_at.map(|x0| interpolation_weights(points, x0));
+        let zero_at = self
+            .spec
+            .shape_zero_at
+            .map(|x0| interpolation_weights(points, x0));
         let mut half_periods = 0;
-        let integral = |g: &[f64]| g.iter().zip(&thickness_area).map(|(a, w)| a * w).sum::<f64>();
+        let integral = |g: &[f64]| {
+            g.iter()
+                .zip(&thickness_area)
+                .map(|(a, w)| a * w)
+                .sum::<f64>()
+        };
         for step in 1..=self.spec.steps {
-            let direction = if monotonic || step % 2 == 1 { Direction::Plus } else { Direction::Minus };
+            let direction = if monotonic || step % 2 == 1 {
+                Direction::Plus
+            } else {
+                Direction::Minus
+            };
             let k = factor(&self.schedule, step);
             half_periods += k;
             let mut solves = 0;
@@ -309,7 +408,25 @@ impl WearIntegrator {
                 for sub in 0..m {
                     let info = solver.solve_into(&shape, direction, &mut sol);
                     track(info, &mut hist);
-                    let part: Vec<f64> = self.laws.iter().map(|l| if monotonic { self.sliding(l.a) / m as f64 } else { partial_sliding(self.spec.amplitude, self.spec.omega, l.a, [std::f64::consts::PI * sub as f64 / m as f64, std::f64::consts::PI * (sub + 1) as f64 / m as f64]) }).collect();
+                    let part: Vec<f64> = self
+                        .laws
+                        .iter()
+                        .map(|l| {
+                            if monotonic {
+                                self.sliding(l.a) / m as f64
+                            } else {
+                                partial_sliding(
+                                    self.spec.amplitude,
+                                    self.spec.omega,
+                                    l.a,
+                                    [
+                                        std::f64::consts::PI * sub as f64 / m as f64,
+                                        std::f64::consts::PI * (sub + 1) as f64 / m as f64,
+                                    ],
+                                )
+                            }
+                        })
+                        .collect();
                     self.wear_increment(&sol.pressure, &part, k as f64, &mut increment);
                     for i in 0..n {
                         shape[i] += increment[i];
@@ -334,7 +451,8 @@ impl WearIntegrator {
                     self.wear_increment(&sol.pressure, &sliding, k as f64, &mut new_increment);
                     let before = integral(&trial);
                     let after = integral(&shape) + integral(&new_increment);
-                    criterion = 100.0 * (after - before).abs() / before.abs().max(f64::MIN_POSITIVE);
+                    criterion =
+                        100.0 * (after - before).abs() / before.abs().max(f64::MIN_POSITIVE);
                     std::mem::swap(&mut increment, &mut new_increment);
                     if criterion <= self.spec.tolerance {
                         converged = true;
@@ -353,7 +471,10 @@ impl WearIntegrator {
                 }
             }
             hist.solves += solves;
-            let dissipation: f64 = (0..n).map(|i| sol.pressure[i] * increment[i] * points.weight[i]).sum::<f64>() * contact.thickness;
+            let dissipation: f64 = (0..n)
+                .map(|i| sol.pressure[i] * increment[i] * points.weight[i])
+                .sum::<f64>()
+                * contact.thickness;
             let mut delta_w = 0.0;
             if direction == Direction::Plus && !monotonic {
                 cycle_wear.copy_from_slice(&increment);
@@ -375,11 +496,28 @@ impl WearIntegrator {
             if monotonic {
                 hist.p_plus.copy_from_slice(&sol.pressure);
             }
-            let record = StepRecord { step, half_period: half_periods, direction: direction.symbol(), k, iterations, solves, criterion, dissipation, probes: probe_points.iter().map(|&i| sol.pressure[i]).collect(), delta_w };
+            let record = StepRecord {
+                step,
+                half_period: half_periods,
+                direction: direction.symbol(),
+                k,
+                iterations,
+                solves,
+                criterion,
+                dissipation,
+                probes: probe_points.iter().map(|&i| sol.pressure[i]).collect(),
+                delta_w,
+            };
             on_step(&record);
             hist.steps.push(record);
             if self.spec.record.contains(&step) {
-                hist.snapshots.push(Snapshot { step, half_period: half_periods, direction: direction.symbol(), pressure: sol.pressure.clone(), shape: shape.clone() });
+                hist.snapshots.push(Snapshot {
+                    step,
+                    half_period: half_periods,
+                    direction: direction.symbol(),
+                    pressure: sol.pressure.clone(),
+                    shape: shape.clone(),
+                });
             }
         }
         hist.shape = shape;
@@ -397,7 +535,9 @@ fn interpolation_weights(points: &ContactPoints, x0: f64) -> Vec<(usize, f64)> {
             return vec![(i, 1.0 - s), (i + 1, s)];
         }
     }
-    let nearest = (0..xs.len()).min_by(|&i, &j| (xs[i] - x0).abs().total_cmp(&(xs[j] - x0).abs())).unwrap_or(0);
+    let nearest = (0..xs.len())
+        .min_by(|&i, &j| (xs[i] - x0).abs().total_cmp(&(xs[j] - x0).abs()))
+        .unwrap_or(0);
     vec![(nearest, 1.0)]
 }
 

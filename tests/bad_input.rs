@@ -20,15 +20,25 @@ fn run(text: &str, tag: &str) -> (i32, String) {
         .arg(dir.join("out"))
         .output()
         .unwrap();
-    (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stderr).to_string())
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stderr).to_string(),
+    )
 }
 
 fn expect_error(text: &str, tag: &str, must_contain: &[&str]) {
     let (code, err) = run(text, tag);
     assert_eq!(code, 2, "{tag}: exit code {code}, stderr: {err}");
     assert!(!err.contains("panicked"), "{tag}: panicked: {err}");
-    assert_eq!(err.trim().lines().count(), 1, "{tag}: expected one line, got: {err}");
-    assert!(err.contains(&format!("{tag}.toml")), "{tag}: message does not name the file: {err}");
+    assert_eq!(
+        err.trim().lines().count(),
+        1,
+        "{tag}: expected one line, got: {err}"
+    );
+    assert!(
+        err.contains(&format!("{tag}.toml")),
+        "{tag}: message does not name the file: {err}"
+    );
     for s in must_contain {
         assert!(err.contains(s), "{tag}: message lacks '{s}': {err}");
     }
@@ -42,41 +52,76 @@ fn baseline_is_accepted() {
 
 #[test]
 fn unknown_key() {
-    expect_error(&baseline().replace("poisson = 0.3", "poisson = 0.3\nyoungs = 3.0"), "unknown_key", &["youngs"]);
+    expect_error(
+        &baseline().replace("poisson = 0.3", "poisson = 0.3\nyoungs = 3.0"),
+        "unknown_key",
+        &["youngs"],
+    );
 }
 
 #[test]
 fn missing_field() {
-    expect_error(&baseline().replace("young = 2.0e5          # MPa\n", ""), "missing_field", &["young"]);
+    expect_error(
+        &baseline().replace("young = 2.0e5          # MPa\n", ""),
+        "missing_field",
+        &["young"],
+    );
 }
 
 #[test]
 fn poisson_ratio_at_one_half() {
-    expect_error(&baseline().replace("poisson = 0.3", "poisson = 0.5"), "poisson_half", &["materials.steel.poisson"]);
+    expect_error(
+        &baseline().replace("poisson = 0.3", "poisson = 0.5"),
+        "poisson_half",
+        &["materials.steel.poisson"],
+    );
 }
 
 #[test]
 fn non_positive_young_modulus() {
-    expect_error(&baseline().replace("young = 2.0e5", "young = -1.0"), "young_negative", &["materials.steel.young"]);
+    expect_error(
+        &baseline().replace("young = 2.0e5", "young = -1.0"),
+        "young_negative",
+        &["materials.steel.young"],
+    );
 }
 
 #[test]
 fn zero_degree() {
-    expect_error(&baseline().replace("p = 8", "p = 0"), "p_zero", &["analysis.p"]);
+    expect_error(
+        &baseline().replace("p = 8", "p = 0"),
+        "p_zero",
+        &["analysis.p"],
+    );
 }
 
 #[test]
 fn clockwise_block() {
-    let text = baseline().replace("corners = [[100.0, 0.0], [200.0, 0.0], [0.0, 200.0], [0.0, 100.0]]", "corners = [[100.0, 0.0], [0.0, 100.0], [0.0, 200.0], [200.0, 0.0]]");
-    expect_error(&text, "clockwise", &["bodies[0].blocks[0].corners", "clockwise"]);
+    let text = baseline().replace(
+        "corners = [[100.0, 0.0], [200.0, 0.0], [0.0, 200.0], [0.0, 100.0]]",
+        "corners = [[100.0, 0.0], [0.0, 100.0], [0.0, 200.0], [200.0, 0.0]]",
+    );
+    expect_error(
+        &text,
+        "clockwise",
+        &["bodies[0].blocks[0].corners", "clockwise"],
+    );
 }
 
 #[test]
 fn unknown_edge_name() {
-    expect_error(&baseline().replace("edge = \"inner\"", "edge = \"innner\""), "edge_name", &["innner"]);
+    expect_error(
+        &baseline().replace("edge = \"inner\"", "edge = \"innner\""),
+        "edge_name",
+        &["innner"],
+    );
 }
 
 #[test]
 fn nan_thickness() {
-    expect_error(&baseline().replace("thickness = 1.0", "thickness = nan"), "nan_thickness", &["analysis.thickness"]);
+    expect_error(
+        &baseline().replace("thickness = 1.0", "thickness = nan"),
+        "nan_thickness",
+        &["analysis.thickness"],
+    );
 }

@@ -10,7 +10,9 @@ fn example(name: &str) -> Problem {
 }
 
 fn with_friction(name: &str, mu: f64) -> Problem {
-    let text = wearfem::examples::example(name).unwrap().replace("friction = 0.25", &format!("friction = {mu}"));
+    let text = wearfem::examples::example(name)
+        .unwrap()
+        .replace("friction = 0.25", &format!("friction = {mu}"));
     Problem::from_toml(&text, name).unwrap()
 }
 
@@ -24,11 +26,22 @@ fn example_1_balances_the_load_and_is_complementary() {
             let (sol, info) = solver.solve(&contact.points.initial_gap, dir);
             assert_eq!(info.status, Status::Solved);
             // The bounds: 1e-10 relative (the reduced system is solved directly).
-            assert!(info.equilibrium < 1e-10, "{name}: equilibrium {:.2e}", info.equilibrium);
-            assert!(info.complementarity < 1e-10, "{name}: complementarity {:.2e}", info.complementarity);
+            assert!(
+                info.equilibrium < 1e-10,
+                "{name}: equilibrium {:.2e}",
+                info.equilibrium
+            );
+            assert!(
+                info.complementarity < 1e-10,
+                "{name}: complementarity {:.2e}",
+                info.complementarity
+            );
             // Vertical equilibrium by hand: Σ P_i = F0 = 16.666 MPa × 60 mm × 10 mm.
             let total: f64 = sol.force.iter().sum();
-            assert!((total - 9999.6).abs() < 1e-8 * 9999.6, "{name}: ΣP = {total}");
+            assert!(
+                (total - 9999.6).abs() < 1e-8 * 9999.6,
+                "{name}: ΣP = {total}"
+            );
             assert!(sol.pressure.iter().all(|&p| p >= -1e-10 * 100.0));
         }
     }
@@ -45,11 +58,25 @@ fn friction_moment_shifts_the_pressure_centre_by_mu_lz() {
         for dir in [Direction::Plus, Direction::Minus] {
             let (sol, _) = solver.solve(&contact.points.initial_gap, dir);
             let total: f64 = sol.force.iter().sum();
-            let centre: f64 = contact.points.x.iter().zip(&sol.force).map(|(x, f)| x[0] * f).sum::<f64>() / total;
+            let centre: f64 = contact
+                .points
+                .x
+                .iter()
+                .zip(&sol.force)
+                .map(|(x, f)| x[0] * f)
+                .sum::<f64>()
+                / total;
             let expected = 1100.0 - dir.sign() * 0.25 * lz;
-            assert!((centre - expected).abs() < 1e-9 * 1100.0, "{name} {dir:?}: centre {centre}, expected {expected}");
+            assert!(
+                (centre - expected).abs() < 1e-9 * 1100.0,
+                "{name} {dir:?}: centre {centre}, expected {expected}"
+            );
             let (left, right) = (sol.pressure[0], sol.pressure[contact.len() - 1]);
-            assert_eq!(left > right, dir == Direction::Plus, "{name} {dir:?}: edge pressures {left} / {right}");
+            assert_eq!(
+                left > right,
+                dir == Direction::Plus,
+                "{name} {dir:?}: edge pressures {left} / {right}"
+            );
         }
     }
 }
@@ -63,37 +90,65 @@ fn frictionless_flat_punch_is_symmetric_with_edge_maxima() {
     let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
     for i in 0..n {
         // The mesh and load are symmetric about x = 1100: only round-off breaks symmetry.
-        assert!((sol.pressure[i] - sol.pressure[n - 1 - i]).abs() < 1e-8 * peak, "asymmetry at {i}");
+        assert!(
+            (sol.pressure[i] - sol.pressure[n - 1 - i]).abs() < 1e-8 * peak,
+            "asymmetry at {i}"
+        );
     }
-    assert_eq!(peak, sol.pressure[0].max(sol.pressure[n - 1]), "maximum not at an edge");
+    assert_eq!(
+        peak,
+        sol.pressure[0].max(sol.pressure[n - 1]),
+        "maximum not at an edge"
+    );
     let mid = sol.pressure[n / 2];
-    assert!(sol.pressure[0] > 2.0 * mid, "edge {} vs centre {mid}: no edge concentration", sol.pressure[0]);
+    assert!(
+        sol.pressure[0] > 2.0 * mid,
+        "edge {} vs centre {mid}: no edge concentration",
+        sol.pressure[0]
+    );
 }
 
 #[test]
 fn penalty_solution_tends_to_the_exact_one() {
     let problem = example("punch-b40");
     let (contact, _, _) = CondensedContact::build(&problem).unwrap();
-    let exact = ContactSolver::new(&contact, Method::ActiveSet).solve(&contact.points.initial_gap, Direction::Plus).0;
+    let exact = ContactSolver::new(&contact, Method::ActiveSet)
+        .solve(&contact.points.initial_gap, Direction::Plus)
+        .0;
     let peak = exact.pressure.iter().cloned().fold(0.0, f64::max);
     let mut previous = f64::INFINITY;
     for c in [1e4, 1e5, 1e6, 1e7, 1e8] {
-        let (sol, info) = ContactSolver::new(&contact, Method::Penalty { stiffness: c }).solve(&contact.points.initial_gap, Direction::Plus);
+        let (sol, info) = ContactSolver::new(&contact, Method::Penalty { stiffness: c })
+            .solve(&contact.points.initial_gap, Direction::Plus);
         assert_eq!(info.status, Status::Solved);
-        let error = sol.pressure.iter().zip(&exact.pressure).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max) / peak;
-        assert!(error < previous, "c_n = {c:e}: error {error:.3e} did not fall (previous {previous:.3e})");
+        let error = sol
+            .pressure
+            .iter()
+            .zip(&exact.pressure)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max)
+            / peak;
+        assert!(
+            error < previous,
+            "c_n = {c:e}: error {error:.3e} did not fall (previous {previous:.3e})"
+        );
         previous = error;
     }
     // Penetration p/c_n vanishes like 1/c_n: at 1e8 MPa/mm the pressures agree to ~1e-3.
-    assert!(previous < 1e-2, "penalty error at c_n = 1e8: {previous:.3e}");
+    assert!(
+        previous < 1e-2,
+        "penalty error at c_n = 1e8: {previous:.3e}"
+    );
 }
 
 #[test]
 fn lemke_and_active_set_agree() {
     let problem = example("punch-b40");
     let (contact, _, _) = CondensedContact::build(&problem).unwrap();
-    let a = ContactSolver::new(&contact, Method::ActiveSet).solve(&contact.points.initial_gap, Direction::Plus);
-    let l = ContactSolver::new(&contact, Method::Lemke).solve(&contact.points.initial_gap, Direction::Plus);
+    let a = ContactSolver::new(&contact, Method::ActiveSet)
+        .solve(&contact.points.initial_gap, Direction::Plus);
+    let l = ContactSolver::new(&contact, Method::Lemke)
+        .solve(&contact.points.initial_gap, Direction::Plus);
     assert_eq!(l.1.status, Status::Solved);
     let peak = a.0.pressure.iter().cloned().fold(0.0, f64::max);
     for (x, y) in a.0.pressure.iter().zip(&l.0.pressure) {
@@ -159,11 +214,16 @@ fn hertz_line_contact() {
     for kind in ["plane_strain", "plane_stress"] {
         let problem = Problem::from_toml(&hertz_problem(kind), "hertz").unwrap();
         let (contact, _, _) = CondensedContact::build(&problem).unwrap();
-        let (sol, info) = ContactSolver::new(&contact, Method::ActiveSet).solve(&contact.points.initial_gap, Direction::Plus);
+        let (sol, info) = ContactSolver::new(&contact, Method::ActiveSet)
+            .solve(&contact.points.initial_gap, Direction::Plus);
         assert_eq!(info.status, Status::Solved);
         let force_per_length = 38.825 * 40.0; // N/mm (thickness 1 mm)
         let (e, nu) = (2.0e5f64, 0.3f64);
-        let e_one = if kind == "plane_strain" { e / (1.0 - nu * nu) } else { e };
+        let e_one = if kind == "plane_strain" {
+            e / (1.0 - nu * nu)
+        } else {
+            e
+        };
         let e_star = e_one / 2.0; // two equal bodies: 1/E* = 2/E'
         let radius = 500.0;
         let a = (4.0 * force_per_length * radius / (std::f64::consts::PI * e_star)).sqrt();
@@ -171,9 +231,19 @@ fn hertz_line_contact() {
         let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
         // Half-width from the elliptic profile: p² = p0²(1 − x²/a²) is linear in x²; fit it
         // through the loaded points that are not next to the contact edge.
-        let pts: Vec<(f64, f64)> = contact.points.x.iter().zip(&sol.pressure).filter(|(_, &p)| p > 0.3 * peak).map(|(x, &p)| (x[0] * x[0], p * p)).collect();
+        let pts: Vec<(f64, f64)> = contact
+            .points
+            .x
+            .iter()
+            .zip(&sol.pressure)
+            .filter(|(_, &p)| p > 0.3 * peak)
+            .map(|(x, &p)| (x[0] * x[0], p * p))
+            .collect();
         let n = pts.len() as f64;
-        let (sx, sy) = (pts.iter().map(|p| p.0).sum::<f64>(), pts.iter().map(|p| p.1).sum::<f64>());
+        let (sx, sy) = (
+            pts.iter().map(|p| p.0).sum::<f64>(),
+            pts.iter().map(|p| p.1).sum::<f64>(),
+        );
         let sxx = pts.iter().map(|p| p.0 * p.0).sum::<f64>();
         let sxy = pts.iter().map(|p| p.0 * p.1).sum::<f64>();
         let slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
@@ -181,7 +251,13 @@ fn hertz_line_contact() {
         let a_fit = (-intercept / slope).sqrt();
         // 2 %: the bound; the finite bodies (contact 2a ≈ 6 mm against 40 and 100 mm)
         // stiffen the response by well under that.
-        assert!((peak - p0).abs() < 0.02 * p0, "{kind}: peak {peak:.3} MPa, Hertz {p0:.3} MPa");
-        assert!((a_fit - a).abs() < 0.02 * a, "{kind}: half-width {a_fit:.4} mm, Hertz {a:.4} mm");
+        assert!(
+            (peak - p0).abs() < 0.02 * p0,
+            "{kind}: peak {peak:.3} MPa, Hertz {p0:.3} MPa"
+        );
+        assert!(
+            (a_fit - a).abs() < 0.02 * a,
+            "{kind}: half-width {a_fit:.4} mm, Hertz {a:.4} mm"
+        );
     }
 }

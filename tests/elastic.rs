@@ -127,8 +127,8 @@ fn patch_stress_error(p: usize, interior_arc: bool) -> f64 {
         for j in 0..7 {
             let x = [0.5 + 1.5 * i as f64, 0.5 + 1.5 * j as f64];
             let v = body.values_at(&u, x).expect("point inside");
-            for c in 0..3 {
-                worst = worst.max((v.stress[c] - sigma[c]).abs() / 3.0);
+            for (computed, exact) in v.stress.iter().zip(&sigma) {
+                worst = worst.max((computed - exact).abs() / 3.0);
             }
         }
     }
@@ -149,9 +149,15 @@ fn patch_test_is_exact_on_distorted_straight_elements() {
 fn patch_test_converges_exponentially_on_arc_elements() {
     // The blending map of an arc-bounded element is not polynomial: the linear field is not in
     // the space, but it is analytic, so the error falls exponentially with p.
-    let errors: Vec<f64> = [2, 4, 6, 8].iter().map(|&p| patch_stress_error(p, true)).collect();
+    let errors: Vec<f64> = [2, 4, 6, 8]
+        .iter()
+        .map(|&p| patch_stress_error(p, true))
+        .collect();
     for w in errors.windows(2) {
-        assert!(w[1] < w[0] / 10.0, "errors do not fall tenfold per two degrees: {errors:?}");
+        assert!(
+            w[1] < w[0] / 10.0,
+            "errors do not fall tenfold per two degrees: {errors:?}"
+        );
     }
     assert!(errors[3] < 1e-5, "p = 8 error {:.3e}", errors[3]);
 }
@@ -174,13 +180,20 @@ fn lame_cylinder_matches_closed_form() {
         let exact = lame_radial(r);
         let rel = (ur - exact).abs() / exact;
         // The issue demands 1e-7: exact geometry, p = 8, smooth solution.
-        assert!(rel < 1e-7, "{name}: u_r = {ur}, exact {exact}, relative error {rel:.3e}");
+        assert!(
+            rel < 1e-7,
+            "{name}: u_r = {ur}, exact {exact}, relative error {rel:.3e}"
+        );
     }
 }
 
 /// Relative energy-norm error of the Lamé problem on one element at degree p.
 fn lame_energy_error(p: usize) -> f64 {
-    let text = wearfem::examples::example("lame").unwrap().replace("p = 8", &format!("p = {p}")).replace("u = 2 ", "u = 1 ").replace("v = 2 ", "v = 1 ");
+    let text = wearfem::examples::example("lame")
+        .unwrap()
+        .replace("p = 8", &format!("p = {p}"))
+        .replace("u = 2 ", "u = 1 ")
+        .replace("v = 2 ", "v = 1 ");
     let problem = Problem::from_toml(&text, "lame-1x1").unwrap();
     let body = problem.elastic_body(0, &[]).unwrap();
     let load = problem.load_vector(0, &body, &[]).unwrap();
@@ -194,8 +207,16 @@ fn lame_energy_error(p: usize) -> f64 {
 
 #[test]
 fn energy_error_falls_exponentially_in_p() {
-    let errors: Vec<(usize, f64)> = [2, 4, 6, 8].iter().map(|&p| (p, lame_energy_error(p))).collect();
+    let errors: Vec<(usize, f64)> = [2, 4, 6, 8]
+        .iter()
+        .map(|&p| (p, lame_energy_error(p)))
+        .collect();
     for w in errors.windows(2) {
-        assert!(w[1].1 < w[0].1 / 10.0, "energy-norm error did not fall tenfold from p = {} to {}: {errors:?}", w[0].0, w[1].0);
+        assert!(
+            w[1].1 < w[0].1 / 10.0,
+            "energy-norm error did not fall tenfold from p = {} to {}: {errors:?}",
+            w[0].0,
+            w[1].0
+        );
     }
 }
