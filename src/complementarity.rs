@@ -213,6 +213,14 @@ impl ContactSolver {
         self.n
     }
 
+    /// Forget the warm-start active sets and factorisations (the next solve is a cold start).
+    pub fn reset(&mut self) {
+        for c in self.cache.iter_mut() {
+            c.active.clear();
+            c.valid = false;
+        }
+    }
+
     /// Whether the problem has no contact points.
     pub fn is_empty(&self) -> bool {
         self.n == 0

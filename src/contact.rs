@@ -305,6 +305,13 @@ impl CondensedContact {
     pub fn build(
         problem: &Problem,
     ) -> Result<(CondensedContact, ElasticBody, ElasticBody), ProblemError> {
+        let (body1, body2) = Self::bodies(problem)?;
+        let contact = Self::from_bodies(problem, &body1, &body2)?;
+        Ok((contact, body1, body2))
+    }
+
+    /// The contact section and the indices of body 1 and body 2, checked.
+    fn spec(problem: &Problem) -> Result<(&ContactSpec, usize, usize), ProblemError> {
         let c = problem
             .spec
             .contact
@@ -328,10 +335,28 @@ impl CondensedContact {
         if b1 == b2 {
             return Err(problem.error("contact.target_body", "must differ from contact.body"));
         }
+        Ok((c, b1, b2))
+    }
+
+    /// Assemble and factorise the two bodies; body 1 with its plate edge clamped.
+    pub fn bodies(problem: &Problem) -> Result<(ElasticBody, ElasticBody), ProblemError> {
+        let (_, b1, b2) = Self::spec(problem)?;
+        let clamped: Vec<&str> = problem.spec.plate.iter().map(|p| p.edge.as_str()).collect();
+        Ok((
+            problem.elastic_body(b1, &clamped)?,
+            problem.elastic_body(b2, &[])?,
+        ))
+    }
+
+    /// Condense two factorised bodies (from [`CondensedContact::bodies`]) onto the contact
+    /// points: 2N right-hand sides per body, no refactorisation.
+    pub fn from_bodies(
+        problem: &Problem,
+        body1: &ElasticBody,
+        body2: &ElasticBody,
+    ) -> Result<CondensedContact, ProblemError> {
+        let (c, b1, b2) = Self::spec(problem)?;
         let plate = problem.spec.plate.clone();
-        let clamped: Vec<&str> = plate.iter().map(|p| p.edge.as_str()).collect();
-        let body1 = problem.elastic_body(b1, &clamped)?;
-        let body2 = problem.elastic_body(b2, &[])?;
         let edge1 = problem
             .named_edge(&body1.mesh, b1, &c.edge, "contact.edge")?
             .to_vec();
@@ -339,10 +364,10 @@ impl CondensedContact {
             .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
             .to_vec();
         let t = problem.analysis.thickness();
-        let (mut points, traces1) = ContactPoints::on_body1(&body1, &edge1, t);
+        let (mut points, traces1) = ContactPoints::on_body1(body1, &edge1, t);
         let mut traces2 = Vec::with_capacity(points.x.len());
         for i in 0..points.x.len() {
-            let (s, tr) = project_on_body2(&body2, &edge2, points.x[i], points.normal[i]).ok_or_else(|| {
+            let (s, tr) = project_on_body2(body2, &edge2, points.x[i], points.normal[i]).ok_or_else(|| {
                 problem.error("contact.target_edge", format!("contact point ({:.4}, {:.4}) of body 1 has no partner on \"{}\" along its normal", points.x[i][0], points.x[i][1], c.target_edge))
             })?;
             let shape = c.initial_shape.map_or(0.0, |sh| {
@@ -352,8 +377,8 @@ impl CondensedContact {
             points.initial_gap.push(s + shape);
             traces2.push(tr);
         }
-        let g1 = flexibility(&body1, &traces1);
-        let g2 = flexibility(&body2, &traces2);
+        let g1 = flexibility(body1, &traces1);
+        let g2 = flexibility(body2, &traces2);
         let n = points.x.len();
         let mut a_nn = vec![0.0; n * n];
         let mut a_nt = vec![0.0; n * n];
@@ -376,7 +401,7 @@ impl CondensedContact {
         }
         let (rigid_modes, rigid_names, plate_load, plate_resultant) = match &plate {
             None => (vec![], vec![], vec![], ([0.0; 2], 0.0)),
-            Some(pl) => plate_modes(problem, b1, &body1, pl, &points)?,
+            Some(pl) => plate_modes(problem, b1, body1, pl, &points)?,
         };
         let contact = CondensedContact {
             points,
@@ -389,7 +414,7 @@ impl CondensedContact {
             plate_load,
             plate_resultant,
         };
-        Ok((contact, body1, body2))
+        Ok(contact)
     }
 
     /// Number of contact points N.
