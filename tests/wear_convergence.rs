@@ -1,0 +1,59 @@
+//! Numerical convergence of the wear integration: extrapolation factors, polynomial degree,
+//! and the half-period scheme against plain sub-stepping.
+
+mod common;
+use common::{p_m_plus, problem, run};
+
+#[test]
+fn halving_the_extrapolation_factors_changes_little() {
+    let base = run(&problem("punch-b40", &[]), None);
+    // k = 1, 2, 5 instead of 1, 5, 10, over the same 16 300 half periods: 50 + 125·2 + 3200·5.
+    let halved = problem("punch-b40", &[("steps = 1700 ", "steps = 3375 \nextrapolation = [{ until = 50, k = 1 }, { until = 175, k = 2 }, { k = 5 }]\n")]);
+    let fine = run(&halved, None);
+    assert_eq!(fine.history.steps.last().unwrap().half_period, 16_300);
+    let (a, b) = (p_m_plus(&base, 1700), p_m_plus(&fine, 3375));
+    // The bound: 0.2 %.
+    assert!(
+        (a - b).abs() < 0.002 * a,
+        "p(M): {a:.5} (k = 1, 5, 10) vs {b:.5} (k = 1, 2, 5)"
+    );
+}
+
+#[test]
+fn raising_p_from_8_to_10_changes_little() {
+    let p8 = run(&problem("punch-b40", &[]), None);
+    let p10 = run(&problem("punch-b40", &[("p = 8", "p = 10")]), None);
+    let (a, b) = (p_m_plus(&p8, 1700), p_m_plus(&p10, 1700));
+    // The bound: 0.2 % (the steady pressure is smooth; only the edge point's
+    // approach to it depends on the resolution).
+    assert!(
+        (a - b).abs() < 0.002 * a,
+        "p(M): {a:.5} (p = 8) vs {b:.5} (p = 10)"
+    );
+}
+
+#[test]
+fn half_period_scheme_agrees_with_sub_stepping() {
+    let scheme = run(&problem("punch-b40", &[]), Some(200));
+    let stepped = run(
+        &problem(
+            "punch-b40",
+            &[("tolerance = 0.01 ", "substeps = 20\ntolerance = 0.01 ")],
+        ),
+        Some(200),
+    );
+    let (a, b) = (&scheme.history, &stepped.history);
+    let peak = a.p_plus.iter().cloned().fold(0.0, f64::max);
+    for (name, x, y) in [("p⁺", &a.p_plus, &b.p_plus), ("p⁻", &a.p_minus, &b.p_minus)] {
+        let worst = x
+            .iter()
+            .zip(y.iter())
+            .map(|(u, v)| (u - v).abs())
+            .fold(0.0, f64::max);
+        // The bound: 0.5 % in pressure after 200 steps.
+        assert!(
+            worst < 0.005 * peak,
+            "{name}: largest difference {worst:.4} MPa of {peak:.3}"
+        );
+    }
+}
