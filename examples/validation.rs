@@ -35,6 +35,26 @@ fn main() {
         println!("| {name} | {u:.12} | {:.12} | {:.1e} |", exact(r), (u - exact(r)).abs() / exact(r));
     }
 
+    println!("\n## Convergence in p: Lamé cylinder, relative energy-norm error\n");
+    println!("Exact strain energy U = ½ p u_r(a) (π a / 2) t; error = √((U − U_h)/U) (Galerkin orthogonality).\n");
+    println!("| p | dofs (1 × 1 mesh) | error (1 × 1) | dofs (2 × 2 mesh) | error (2 × 2) |\n|---|---|---|---|---|");
+    let u_exact = 0.5 * 100.0 * exact(100.0) * (std::f64::consts::FRAC_PI_2 * 100.0);
+    for p in 1..=8 {
+        let mut row = format!("| {p} |");
+        for mesh in ["1", "2"] {
+            let degree = format!("p = {p}");
+            let (u_line, v_line) = (format!("u = {mesh} "), format!("v = {mesh} "));
+            let pr = problem("lame", &[("p = 8", &degree), ("u = 2 ", &u_line), ("v = 2 ", &v_line)]);
+            let body = pr.elastic_body(0, &[]).unwrap();
+            let load = pr.load_vector(0, &body, &[]).unwrap();
+            let u = body.solve(&load);
+            let energy = wearfem::fields::strain_energy(&load, &u);
+            let error = ((u_exact - energy) / u_exact).max(0.0).sqrt();
+            row += &format!(" {} | {error:.3e} |", body.info.total_dofs);
+        }
+        println!("{row}");
+    }
+
     println!("\n## Example 1, first contact solve (flat punch, '+' direction, no wear)\n");
     println!("| case | p(M) wearfem, MPa | paper Table 2, n = 1 |\n|---|---|---|");
     let paper = [("punch-a", 148.41933), ("punch-b20", 100.87461), ("punch-b40", 138.37226)];
