@@ -26,13 +26,20 @@ fn main() {
     let lame = driver::elastic(&problem("lame", &[])).unwrap();
     let exact = |r: f64| {
         let (a, b, p, e, nu) = (100.0f64, 200.0f64, 100.0f64, 2.0e5f64, 0.3f64);
-        let (ca, cb) = (p * a * a / (b * b - a * a), p * a * a * b * b / (b * b - a * a));
+        let (ca, cb) = (
+            p * a * a / (b * b - a * a),
+            p * a * a * b * b / (b * b - a * a),
+        );
         (1.0 + nu) / e * ((1.0 - 2.0 * nu) * ca * r + cb / r)
     };
     println!("| probe | u_r wearfem (mm) | u_r Lamé (mm) | relative error |\n|---|---|---|---|");
     for (name, r) in [("inner", 100.0), ("outer", 200.0)] {
         let u = lame["probes"][name]["displacement"][0].as_f64().unwrap();
-        println!("| {name} | {u:.12} | {:.12} | {:.1e} |", exact(r), (u - exact(r)).abs() / exact(r));
+        println!(
+            "| {name} | {u:.12} | {:.12} | {:.1e} |",
+            exact(r),
+            (u - exact(r)).abs() / exact(r)
+        );
     }
 
     println!("\n## Convergence in p: Lamé cylinder, relative energy-norm error\n");
@@ -44,7 +51,10 @@ fn main() {
         for mesh in ["1", "2"] {
             let degree = format!("p = {p}");
             let (u_line, v_line) = (format!("u = {mesh} "), format!("v = {mesh} "));
-            let pr = problem("lame", &[("p = 8", &degree), ("u = 2 ", &u_line), ("v = 2 ", &v_line)]);
+            let pr = problem(
+                "lame",
+                &[("p = 8", &degree), ("u = 2 ", &u_line), ("v = 2 ", &v_line)],
+            );
             let body = pr.elastic_body(0, &[]).unwrap();
             let load = pr.load_vector(0, &body, &[]).unwrap();
             let u = body.solve(&load);
@@ -57,24 +67,36 @@ fn main() {
 
     println!("\n## Example 1, first contact solve (flat punch, '+' direction, no wear)\n");
     println!("| case | p(M) wearfem, MPa | paper Table 2, n = 1 |\n|---|---|---|");
-    let paper = [("punch-a", 148.41933), ("punch-b20", 100.87461), ("punch-b40", 138.37226)];
+    let paper = [
+        ("punch-a", 148.41933),
+        ("punch-b20", 100.87461),
+        ("punch-b40", 138.37226),
+    ];
     for (name, reference) in paper {
         let (contact, _, _) = CondensedContact::build(&problem(name, &[])).unwrap();
-        let (sol, _) = ContactSolver::new(&contact, Method::ActiveSet).solve(&contact.points.initial_gap, Direction::Plus);
+        let (sol, _) = ContactSolver::new(&contact, Method::ActiveSet)
+            .solve(&contact.points.initial_gap, Direction::Plus);
         println!("| {name} | {:.3} | {reference:.3} |", sol.pressure[0]);
     }
 
-    println!("\nThe same first solve of punch-a under p-refinement (the edge value is singular):\n");
+    println!(
+        "\nThe same first solve of punch-a under p-refinement (the edge value is singular):\n"
+    );
     println!("| p | contact points | p(M), MPa |\n|---|---|---|");
     for p in [4, 6, 8, 10, 12] {
         let degree = format!("p = {p}");
-        let (contact, _, _) = CondensedContact::build(&problem("punch-a", &[("p = 8", &degree)])).unwrap();
-        let (sol, _) = ContactSolver::new(&contact, Method::ActiveSet).solve(&contact.points.initial_gap, Direction::Plus);
+        let (contact, _, _) =
+            CondensedContact::build(&problem("punch-a", &[("p = 8", &degree)])).unwrap();
+        let (sol, _) = ContactSolver::new(&contact, Method::ActiveSet)
+            .solve(&contact.points.initial_gap, Direction::Plus);
         println!("| {p} | {} | {:.3} |", contact.len(), sol.pressure[0]);
     }
 
     println!("\n## Table 2: pressure at M (MPa) at the '+' half cycle of step n\n");
-    let runs: Vec<driver::WearRun> = ["punch-a", "punch-b20", "punch-b40"].iter().map(|n| driver::wear(&problem(n, &[]), None, |_| {}).unwrap()).collect();
+    let runs: Vec<driver::WearRun> = ["punch-a", "punch-b20", "punch-b40"]
+        .iter()
+        .map(|n| driver::wear(&problem(n, &[]), None, |_| {}).unwrap())
+        .collect();
     let table: [(usize, usize, [f64; 3]); 15] = [
         (1, 1, [148.41933, 100.87461, 138.37226]),
         (50, 50, [114.70731, 87.926576, 107.45308]),
@@ -94,7 +116,15 @@ fn main() {
     ];
     println!("| n | n_hp | p_n(λ_F) ours | paper | l_z = 20 ours | paper | l_z = 40 ours | paper |\n|---|---|---|---|---|---|---|---|");
     for (n, hp, paper) in table {
-        println!("| {n} | {hp} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} |", p_m(&runs[0], n), paper[0], p_m(&runs[1], n), paper[1], p_m(&runs[2], n), paper[2]);
+        println!(
+            "| {n} | {hp} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} |",
+            p_m(&runs[0], n),
+            paper[0],
+            p_m(&runs[1], n),
+            paper[1],
+            p_m(&runs[2], n),
+            paper[2]
+        );
     }
 
     println!("\n## Periodic steady state after 1700 steps\n");
@@ -103,33 +133,65 @@ fn main() {
         let h = &run.history;
         let n = h.p_plus.len();
         let sums: Vec<f64> = (1..n - 1).map(|i| h.p_plus[i] + h.p_minus[i]).collect();
-        let (lo, hi) = sums.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &s| (a.min(s), b.max(s)));
+        let (lo, hi) = sums
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &s| {
+                (a.min(s), b.max(s))
+            });
         println!("| {name} | p⁺ + p⁻ (interior range), MPa | {lo:.3} … {hi:.3} | 2p̃ = 33.332 (eq. 23a) |");
     }
-    for (name, b, paper_edge, paper_pm) in [("punch-b40-b1.2", 1.2f64, 30.948, 17.369), ("punch-b40-b0.8", 0.8f64, 37.806, 15.8954)] {
+    for (name, b, paper_edge, paper_pm) in [
+        ("punch-b40-b1.2", 1.2f64, 30.948, 17.369),
+        ("punch-b40-b0.8", 0.8f64, 37.806, 15.8954),
+    ] {
         let run = driver::wear(&problem(name, &[]), None, |_| {}).unwrap();
         let h = &run.history;
-        let centre = run.contact.points.x.iter().position(|x| (x[0] - 1100.0).abs() < 1e-9).unwrap();
+        let centre = run
+            .contact
+            .points
+            .x
+            .iter()
+            .position(|x| (x[0] - 1100.0).abs() < 1e-9)
+            .unwrap();
         let pm = h.p_plus[centre];
         println!("| {name} | p_m (centre), MPa | {pm:.4} | {paper_pm} (paper) |");
         println!("| {name} | edge p⁺(1070), MPa | {:.4} | {paper_edge} (paper); 2^(1/b) p_m = {:.4} (eq. 23c) |", h.p_plus[0], 2f64.powf(1.0 / b) * pm);
         let n = h.p_plus.len();
-        let s: Vec<f64> = (1..n - 1).map(|i| h.p_plus[i].powf(b) + h.p_minus[i].powf(b)).collect();
-        let (lo, hi) = s.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), &v| (a.min(v), c.max(v)));
+        let s: Vec<f64> = (1..n - 1)
+            .map(|i| h.p_plus[i].powf(b) + h.p_minus[i].powf(b))
+            .collect();
+        let (lo, hi) = s
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), &v| {
+                (a.min(v), c.max(v))
+            });
         println!("| {name} | (p⁺)ᵇ + (p⁻)ᵇ interior range | {lo:.3} … {hi:.3} | 2p_mᵇ = {:.3} (eq. 23b) |", 2.0 * pm.powf(b));
     }
-    for (name, loads) in [("punch-b40-variant2", vec![(20.0, 10.0, 60.0)]), ("punch-b40-variant3", vec![(25.0, 30.0, 60.0), (12.5, 10.0, 30.0)]), ("punch-b20-variant2", vec![(20.0, 10.0, 60.0)])] {
+    for (name, loads) in [
+        ("punch-b40-variant2", vec![(20.0, 10.0, 60.0)]),
+        (
+            "punch-b40-variant3",
+            vec![(25.0, 30.0, 60.0), (12.5, 10.0, 30.0)],
+        ),
+        ("punch-b20-variant2", vec![(20.0, 10.0, 60.0)]),
+    ] {
         let run = driver::wear(&problem(name, &[]), None, |_| {}).unwrap();
         let h = &run.history;
         let (l, t) = (60.0, 10.0);
         let f0: f64 = loads.iter().map(|&(p, a, b)| p * (b - a) * t).sum();
-        let xf: f64 = loads.iter().map(|&(p, a, b)| p * (b - a) * t * 0.5 * (a + b)).sum::<f64>() / f0;
+        let xf: f64 = loads
+            .iter()
+            .map(|&(p, a, b)| p * (b - a) * t * 0.5 * (a + b))
+            .sum::<f64>()
+            / f0;
         let sc = l * t;
         let c = f0 / sc - 3.0 * f0 * (-l + 2.0 * xf) / (l * sc);
         let slope = 6.0 * f0 * (-l + 2.0 * xf) / (l * l * sc);
         let line = |x: f64| 2.0 * (c + slope * (1130.0 - x));
         let n = h.p_plus.len();
-        let worst = (1..n - 1).map(|i| (h.p_plus[i] + h.p_minus[i] - line(run.contact.points.x[i][0])).abs()).fold(0.0, f64::max);
+        let worst = (1..n - 1)
+            .map(|i| (h.p_plus[i] + h.p_minus[i] - line(run.contact.points.x[i][0])).abs())
+            .fold(0.0, f64::max);
         println!("| {name} | largest deviation of p_Σ from eq. 19 (interior), MPa | {worst:.3} | 0; line from {:.2} to {:.2} MPa, x̃_F = {xf:.2} mm |", line(1130.0), line(1070.0));
     }
 }

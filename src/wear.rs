@@ -71,6 +71,10 @@ pub struct WearSpec {
     /// Criterion eq. 27, percent (default 0.01).
     #[serde(default = "default_tolerance")]
     pub tolerance: f64,
+    /// "eq27" (default): the paper's integral criterion; "pointwise": the largest change of the
+    /// wear increment at any point, relative to its largest value (percent).
+    #[serde(default = "eq27")]
+    pub criterion: String,
     /// Most implicit iterations per step (default 50).
     #[serde(default = "default_iterations")]
     pub max_iterations: usize,
@@ -87,6 +91,9 @@ pub struct WearSpec {
 
 fn reciprocating() -> String {
     "reciprocating".into()
+}
+fn eq27() -> String {
+    "eq27".into()
 }
 fn default_tolerance() -> f64 {
     0.01
@@ -309,6 +316,15 @@ impl WearIntegrator {
                 format!("must be positive (percent), got {}", spec.tolerance),
             );
         }
+        if spec.criterion != "eq27" && spec.criterion != "pointwise" {
+            return bad(
+                "criterion",
+                format!(
+                    "must be \"eq27\" or \"pointwise\", got \"{}\"",
+                    spec.criterion
+                ),
+            );
+        }
         if spec.max_iterations == 0 {
             return bad("max_iterations", "must be at least 1".into());
         }
@@ -373,6 +389,7 @@ impl WearIntegrator {
             failed_solves: 0,
         };
         let monotonic = self.spec.sliding == "monotonic";
+        let pointwise = self.spec.criterion == "pointwise";
         let zero_at = self
             .spec
             .shape_zero_at
@@ -449,10 +466,18 @@ impl WearIntegrator {
                     let info = solver.solve_into(&trial, direction, &mut sol);
                     track(info, &mut hist);
                     self.wear_increment(&sol.pressure, &sliding, k as f64, &mut new_increment);
-                    let before = integral(&trial);
-                    let after = integral(&shape) + integral(&new_increment);
-                    criterion =
-                        100.0 * (after - before).abs() / before.abs().max(f64::MIN_POSITIVE);
+                    criterion = if pointwise {
+                        let largest = new_increment.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+                        let change = new_increment
+                            .iter()
+                            .zip(&increment)
+                            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+                        100.0 * change / largest.max(f64::MIN_POSITIVE)
+                    } else {
+                        let before = integral(&trial);
+                        let after = integral(&shape) + integral(&new_increment);
+                        100.0 * (after - before).abs() / before.abs().max(f64::MIN_POSITIVE)
+                    };
                     std::mem::swap(&mut increment, &mut new_increment);
                     if criterion <= self.spec.tolerance {
                         converged = true;
