@@ -40,6 +40,7 @@ pub mod loads;
 pub mod material;
 pub mod mesh;
 pub mod output;
+pub mod plot;
 pub mod problem;
 pub mod quadrature;
 pub mod wear;

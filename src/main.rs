@@ -2,7 +2,7 @@
 //! only reads arguments, loads the problem and writes the results.
 
 use clap::{Parser, Subcommand};
-use serde_json::{json, Value};
+use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use wearfem::driver::{self, JobError};
@@ -154,57 +154,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     last_report = std::time::Instant::now();
                 }
             })?;
-            let summary = result.summary(&p);
-            write_json(&out, "summary.json", &summary)?;
+            wearfem::output::write_wear(&out, &p, &result)?;
             let h = &result.history;
-            let mut header = vec![
-                "step".to_string(),
-                "half_period".into(),
-                "direction".into(),
-                "k".into(),
-                "iterations".into(),
-                "criterion_percent".into(),
-                "dissipation_Nmm".into(),
-                "delta_w_mm".into(),
-            ];
-            header.extend(result.probes.iter().map(|(n, _)| format!("p_{n}_MPa")));
-            let rows: Vec<Vec<Value>> = h
-                .steps
-                .iter()
-                .map(|s| {
-                    let mut r = vec![
-                        json!(s.step),
-                        json!(s.half_period),
-                        json!(s.direction),
-                        json!(s.k),
-                        json!(s.iterations),
-                        number(s.criterion),
-                        number(s.dissipation),
-                        number(s.delta_w),
-                    ];
-                    r.extend(s.probes.iter().map(|&v| number(v)));
-                    r
-                })
-                .collect();
-            let header_refs: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
-            write_csv(&out, "history.csv", &header_refs, &rows)?;
-            let rows: Vec<Vec<Value>> = (0..result.contact.len())
-                .map(|i| {
-                    vec![
-                        number(result.contact.points.x[i][0]),
-                        number(h.p_plus[i]),
-                        number(h.p_minus[i]),
-                        number(h.p_plus[i] + h.p_minus[i]),
-                        number(h.shape[i]),
-                    ]
-                })
-                .collect();
-            write_csv(
-                &out,
-                "final.csv",
-                &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"],
-                &rows,
-            )?;
+            let last_plus = h.steps.iter().rev().find(|s| s.direction == "+");
             let probe_text: Vec<String> = result
                 .probes
                 .iter()
@@ -212,11 +164,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 .map(|(k, (n, _))| {
                     format!(
                         "p({n}) = {:.4} MPa",
-                        h.steps.last().map_or(f64::NAN, |s| s.probes[k])
+                        last_plus.map_or(f64::NAN, |s| s.probes[k])
                     )
                 })
                 .collect();
-            println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
+            println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '+' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
             if h.failed_solves > 0 || h.unconverged_steps > 0 {
                 return Err(Failure::Compute(format!("{} contact solves failed and {} steps missed criterion eq. 27; results kept in {}", h.failed_solves, h.unconverged_steps, out.display())));
             }

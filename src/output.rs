@@ -70,3 +70,169 @@ pub fn number(x: f64) -> Value {
 pub fn numbers(x: &[f64]) -> Value {
     Value::Array(x.iter().map(|&v| number(v)).collect())
 }
+
+/// Write everything a wear run produces into `dir`: summary.json, history.csv, final.csv,
+/// snapshots.csv and the plots pressure.svg, shape.svg, history.svg.
+pub fn write_wear(
+    dir: &Path,
+    problem: &crate::problem::Problem,
+    run: &crate::driver::WearRun,
+) -> Result<(), OutputError> {
+    use crate::plot::{line_plot, Series};
+    write_json(dir, "summary.json", &run.summary(problem))?;
+    let h = &run.history;
+    let mut header = vec![
+        "step".to_string(),
+        "half_period".into(),
+        "direction".into(),
+        "k".into(),
+        "iterations".into(),
+        "criterion_percent".into(),
+        "dissipation_Nmm".into(),
+        "delta_w_mm".into(),
+    ];
+    header.extend(run.probes.iter().map(|(n, _)| format!("p_{n}_MPa")));
+    let rows: Vec<Vec<Value>> = h
+        .steps
+        .iter()
+        .map(|s| {
+            let mut r = vec![
+                json!(s.step),
+                json!(s.half_period),
+                json!(s.direction),
+                json!(s.k),
+                json!(s.iterations),
+                number(s.criterion),
+                number(s.dissipation),
+                number(s.delta_w),
+            ];
+            r.extend(s.probes.iter().map(|&v| number(v)));
+            r
+        })
+        .collect();
+    let header_refs: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
+    write_csv(dir, "history.csv", &header_refs, &rows)?;
+    let x: Vec<f64> = run.contact.points.x.iter().map(|p| p[0]).collect();
+    let rows: Vec<Vec<Value>> = (0..x.len())
+        .map(|i| {
+            vec![
+                number(x[i]),
+                number(h.p_plus[i]),
+                number(h.p_minus[i]),
+                number(h.p_plus[i] + h.p_minus[i]),
+                number(h.shape[i]),
+            ]
+        })
+        .collect();
+    write_csv(
+        dir,
+        "final.csv",
+        &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"],
+        &rows,
+    )?;
+    let rows: Vec<Vec<Value>> = h
+        .snapshots
+        .iter()
+        .flat_map(|s| (0..x.len()).map(move |i| (s, i)))
+        .map(|(s, i)| {
+            vec![
+                json!(s.step),
+                json!(s.half_period),
+                json!(s.direction),
+                number(x[i]),
+                number(s.pressure[i]),
+                number(s.shape[i]),
+            ]
+        })
+        .collect();
+    write_csv(
+        dir,
+        "snapshots.csv",
+        &[
+            "step",
+            "half_period",
+            "direction",
+            "x_mm",
+            "pressure_MPa",
+            "shape_mm",
+        ],
+        &rows,
+    )?;
+    let profile = |v: &[f64], scale: f64| {
+        x.iter()
+            .zip(v)
+            .map(|(&a, &b)| (a, b * scale))
+            .collect::<Vec<_>>()
+    };
+    let p_sum: Vec<f64> = h
+        .p_plus
+        .iter()
+        .zip(&h.p_minus)
+        .map(|(a, b)| a + b)
+        .collect();
+    let plots = [
+        (
+            "pressure.svg",
+            "Contact pressure, last cycle",
+            "x (mm)",
+            "p (MPa)",
+            vec![
+                Series {
+                    label: "p+",
+                    points: profile(&h.p_plus, 1.0),
+                },
+                Series {
+                    label: "p-",
+                    points: profile(&h.p_minus, 1.0),
+                },
+                Series {
+                    label: "p+ + p-",
+                    points: profile(&p_sum, 1.0),
+                },
+            ],
+        ),
+        (
+            "shape.svg",
+            "Worn shape (wear gap)",
+            "x (mm)",
+            "g (µm)",
+            vec![Series {
+                label: "shape",
+                points: profile(&h.shape, 1000.0),
+            }],
+        ),
+    ];
+    for (name, title, xl, yl, series) in plots {
+        let path = dir.join(name);
+        line_plot(&path, title, xl, yl, &series).map_err(|m| OutputError {
+            path: path.display().to_string(),
+            source: std::io::Error::other(m),
+        })?;
+    }
+    let series: Vec<Series> = run
+        .probes
+        .iter()
+        .enumerate()
+        .map(|(k, (name, _))| Series {
+            label: name,
+            points: h
+                .steps
+                .iter()
+                .filter(|s| s.direction == "+")
+                .map(|s| (s.half_period as f64, s.probes[k]))
+                .collect(),
+        })
+        .collect();
+    let path = dir.join("history.svg");
+    line_plot(
+        &path,
+        "Pressure at the probes, '+' half cycles",
+        "half period",
+        "p (MPa)",
+        &series,
+    )
+    .map_err(|m| OutputError {
+        path: path.display().to_string(),
+        source: std::io::Error::other(m),
+    })
+}
