@@ -27,6 +27,7 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         "punch-b20-variant2",
         include_str!("../examples/punch-b20-variant2.toml"),
     ),
+    ("brake", include_str!("../examples/brake.toml")),
 ];
 
 /// The text of built-in example `name`.

@@ -82,7 +82,8 @@ pub struct WearSpec {
     /// per half period (for checking the scheme).
     #[serde(default)]
     pub substeps: usize,
-    /// x (mm) of the point where the shape is shifted to zero after every full cycle.
+    /// x (mm) of the point where the shape is shifted to zero after every full cycle, by a
+    /// vertical rigid translation of body 1 (which leaves the pressures unchanged).
     pub shape_zero_at: Option<f64>,
     /// Steps at which whole pressure and shape profiles are recorded.
     #[serde(default)]
@@ -514,8 +515,18 @@ impl WearIntegrator {
                 let min = cycle_wear.iter().cloned().fold(f64::INFINITY, f64::min);
                 delta_w = cycle_wear.iter().map(|w| w - min).fold(0.0, f64::max);
                 if let Some(weights) = &zero_at {
-                    let offset: f64 = weights.iter().map(|&(i, w)| w * shape[i]).sum();
-                    shape.iter_mut().for_each(|g| *g -= offset);
+                    // Shift by a vertical rigid translation of body 1, which changes the gap by
+                    // n_c·(−e_z) at each point (1 under a flat punch, cos α on an arc) and so
+                    // leaves every pressure unchanged: the plate's λ_F takes it up.
+                    let mode = |i: usize| -points.normal[i][1];
+                    let at_ref: f64 = weights.iter().map(|&(i, w)| w * mode(i)).sum();
+                    if at_ref.abs() > 1e-12 {
+                        let offset =
+                            weights.iter().map(|&(i, w)| w * shape[i]).sum::<f64>() / at_ref;
+                        for (i, g) in shape.iter_mut().enumerate() {
+                            *g -= offset * mode(i);
+                        }
+                    }
                 }
             }
             if monotonic {
