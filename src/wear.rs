@@ -326,6 +326,9 @@ impl WearIntegrator {
                 ),
             );
         }
+        if spec.steps == 0 {
+            return bad("steps", "must be at least 1".into());
+        }
         if spec.max_iterations == 0 {
             return bad("max_iterations", "must be at least 1".into());
         }

@@ -125,3 +125,65 @@ fn nan_thickness() {
         &["analysis.thickness"],
     );
 }
+
+/// Run `wearfem run` on an edited punch-b40 file; returns (exit code, stderr).
+fn run_wear(text: &str, tag: &str) -> (i32, String) {
+    let dir = std::env::temp_dir().join(format!("wearfem-badrun-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join(format!("{tag}.toml"));
+    std::fs::write(&file, text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .arg("run")
+        .arg(&file)
+        .arg("--steps")
+        .arg("2")
+        .arg("--out")
+        .arg(dir.join("out"))
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stderr).to_string(),
+    )
+}
+
+#[test]
+fn broken_contact_plate_and_wear_sections() {
+    let base = wearfem::examples::example("punch-b40").unwrap();
+    let cases = [
+        ("friction = 0.25", "friction = -0.25", "contact.friction"),
+        (
+            "motion = \"vertical_rotation\"",
+            "motion = \"sideways\"",
+            "plate.motion",
+        ),
+        ("pin = [1100.0, 140.0] ", "", "plate.pin"),
+        ("amplitude = 1.5 ", "amplitude = 0.0 ", "wear.amplitude"),
+        (
+            "sliding = \"reciprocating\"",
+            "sliding = \"circular\"",
+            "wear.sliding",
+        ),
+        (
+            "tolerance = 0.01 ",
+            "tolerance = 0.01 \nextrapolation = [{ k = 0 }]\n",
+            "wear.extrapolation",
+        ),
+        (
+            "target_edge = \"surface\"",
+            "target_edge = \"top\"",
+            "contact.target_edge",
+        ),
+    ];
+    for (k, (from, to, key)) in cases.iter().enumerate() {
+        assert!(base.contains(from), "baseline lacks '{from}'");
+        let tag = format!("wear{k}");
+        let (code, err) = run_wear(&base.replace(from, to), &tag);
+        assert_eq!(code, 2, "{key}: exit {code}: {err}");
+        assert!(
+            err.contains(key) && err.contains(&format!("{tag}.toml")),
+            "{key}: {err}"
+        );
+        assert!(!err.contains("panicked"), "{err}");
+    }
+}

@@ -84,3 +84,15 @@ fn pointwise_criterion_agrees_with_eq_27() {
         "p(M): {a:.5} (eq. 27) vs {b:.5} (pointwise)"
     );
 }
+
+#[test]
+fn substrate_wear_adds_to_punch_wear_in_the_gap() {
+    // Both bodies' normal wear enters the same gap (reference model: the point pairs do not
+    // move), so half the wear coefficient on each body must reproduce the punch-only run.
+    let punch = run(&problem("punch-a", &[]), Some(300));
+    let split = run(&problem("punch-a", &[("body1 = { beta = 3.9269908169872414e-8, a = 1.0, b = 1.0 }", "body1 = { beta = 1.9634954084936207e-8, a = 1.0, b = 1.0 }\nbody2 = { beta = 1.9634954084936207e-8 }")]), Some(300));
+    for (a, b) in punch.history.p_plus.iter().zip(&split.history.p_plus) {
+        // Same arithmetic up to the order of two additions: round-off only.
+        assert!((a - b).abs() < 1e-9 * a.abs().max(1.0), "{a} vs {b}");
+    }
+}
