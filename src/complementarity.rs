@@ -142,45 +142,19 @@ impl ContactSolver {
     pub fn new(contact: &CondensedContact, method: Method) -> ContactSolver {
         let n = contact.len();
         let m = contact.rigid_modes.len();
-        let pts = &contact.points;
-        let area: Vec<f64> = pts.weight.iter().map(|w| w * contact.thickness).collect();
+        let area = contact.areas();
         let penalty_compliance: Vec<f64> = match method {
             Method::Penalty { stiffness } => area.iter().map(|a| 1.0 / (stiffness * a)).collect(),
             _ => vec![0.0; n],
         };
         let make_a = |s: f64| {
-            let mut a: Vec<f64> = contact
-                .a_nn
-                .iter()
-                .zip(&contact.a_nt)
-                .map(|(nn, nt)| nn - s * contact.friction * nt)
-                .collect();
+            let mut a = contact.gap_matrix(s);
             for i in 0..n {
                 a[i * n + i] += penalty_compliance[i];
             }
             a
         };
-        let mut r = vec![0.0; n * m];
-        let make_e = |s: f64| {
-            let mut e = vec![0.0; m * n];
-            for k in 0..m {
-                for j in 0..n {
-                    let phi = contact.rigid_modes[k][j];
-                    let dir = [
-                        -pts.normal[j][0] + s * contact.friction * pts.tangent[j][0],
-                        -pts.normal[j][1] + s * contact.friction * pts.tangent[j][1],
-                    ];
-                    e[k * n + j] = phi[0] * dir[0] + phi[1] * dir[1];
-                }
-            }
-            e
-        };
-        for i in 0..n {
-            for k in 0..m {
-                let phi = contact.rigid_modes[k][i];
-                r[i * m + k] = -(pts.normal[i][0] * phi[0] + pts.normal[i][1] * phi[1]);
-            }
-        }
+        let r = contact.rigid_gap_matrix();
         let gap_to_pressure = (0..n)
             .map(|i| 1.0 / (contact.a_nn[i * n + i] * area[i]))
             .collect();
@@ -194,7 +168,10 @@ impl ContactSolver {
             m,
             method,
             a: [make_a(1.0), make_a(-1.0)],
-            e: [make_e(1.0), make_e(-1.0)],
+            e: [
+                contact.equilibrium_matrix(1.0),
+                contact.equilibrium_matrix(-1.0),
+            ],
             r,
             load: contact.plate_load.clone(),
             gap_to_pressure,

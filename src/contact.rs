@@ -422,6 +422,57 @@ impl CondensedContact {
         self.points.x.len()
     }
 
+    /// Contact area w_i t of each point, mm².
+    pub fn areas(&self) -> Vec<f64> {
+        self.points
+            .weight
+            .iter()
+            .map(|w| w * self.thickness)
+            .collect()
+    }
+
+    /// A_s = A_nn − s μ A_nt (mm/N, row-major N × N): gap change per unit contact force in
+    /// half-cycle sign s.
+    pub fn gap_matrix(&self, s: f64) -> Vec<f64> {
+        self.a_nn
+            .iter()
+            .zip(&self.a_nt)
+            .map(|(nn, nt)| nn - s * self.friction * nt)
+            .collect()
+    }
+
+    /// R (row-major N × m): R(i,k) = −n_i·φ_k(x_i), the gap change per unit rigid motion λ_k.
+    pub fn rigid_gap_matrix(&self) -> Vec<f64> {
+        let (n, m) = (self.len(), self.rigid_modes.len());
+        let mut r = vec![0.0; n * m];
+        for i in 0..n {
+            for k in 0..m {
+                let (phi, normal) = (self.rigid_modes[k][i], self.points.normal[i]);
+                r[i * m + k] = -(normal[0] * phi[0] + normal[1] * phi[1]);
+            }
+        }
+        r
+    }
+
+    /// E (row-major m × N): E(k,j) = φ_k(x_j)·(−n_j + s μ τ_j), the generalised plate force of a
+    /// unit contact force; the plate's equilibrium is E P + L = 0.
+    pub fn equilibrium_matrix(&self, s: f64) -> Vec<f64> {
+        let (n, m) = (self.len(), self.rigid_modes.len());
+        let pts = &self.points;
+        let mut e = vec![0.0; m * n];
+        for k in 0..m {
+            for j in 0..n {
+                let phi = self.rigid_modes[k][j];
+                let dir = [
+                    -pts.normal[j][0] + s * self.friction * pts.tangent[j][0],
+                    -pts.normal[j][1] + s * self.friction * pts.tangent[j][1],
+                ];
+                e[k * n + j] = phi[0] * dir[0] + phi[1] * dir[1];
+            }
+        }
+        e
+    }
+
     /// Whether there are no contact points.
     pub fn is_empty(&self) -> bool {
         self.points.x.is_empty()

@@ -275,3 +275,27 @@ impl WearRun {
         })
     }
 }
+
+/// The steady worn state of `problem` computed directly (no time integration), with the
+/// condensed contact problem it was computed on.
+pub fn steady(
+    problem: &Problem,
+) -> Result<(crate::steady::SteadyState, CondensedContact, f64), JobError> {
+    let spec = problem
+        .spec
+        .wear
+        .clone()
+        .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
+    let integrator =
+        WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
+    let start = Instant::now();
+    let (contact, _, _) = CondensedContact::build(problem)?;
+    let state = crate::steady::steady_state(
+        &contact,
+        &integrator.half_period_wear(),
+        integrator.is_monotonic(),
+        Default::default(),
+    )
+    .map_err(|e| problem.error("plate.motion", e.to_string()))?;
+    Ok((state, contact, start.elapsed().as_secs_f64()))
+}

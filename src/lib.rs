@@ -43,4 +43,5 @@ pub mod output;
 pub mod plot;
 pub mod problem;
 pub mod quadrature;
+pub mod steady;
 pub mod wear;

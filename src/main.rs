@@ -50,6 +50,15 @@ enum Command {
         #[arg(long)]
         steps: Option<usize>,
     },
+    /// Compute the steady worn state directly (no time integration); writes summary.json,
+    /// steady.csv and pressure.svg, shape.svg.
+    Steady {
+        /// Problem file (TOML) or built-in example name.
+        problem: String,
+        /// Output directory.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
     /// List the built-in examples, or print one (`wearfem examples show NAME`).
     Examples {
         /// "show".
@@ -171,6 +180,26 @@ fn run(cli: Cli) -> Result<(), Failure> {
             println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '+' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
             if h.failed_solves > 0 || h.unconverged_steps > 0 {
                 return Err(Failure::Compute(format!("{} contact solves failed and {} steps missed criterion eq. 27; results kept in {}", h.failed_solves, h.unconverged_steps, out.display())));
+            }
+        }
+        Command::Steady { problem, out } => {
+            let p = load(&problem)?;
+            let (state, contact, seconds) = driver::steady(&p)?;
+            wearfem::output::write_steady(&out, &p, &contact, &state, seconds)?;
+            let probes: Vec<String> = driver::contact_probes(&p, &contact)
+                .iter()
+                .map(|(n, i)| format!("p⁺({n}) = {:.4} MPa", state.p_plus[*i]))
+                .collect();
+            println!(
+                "{}: steady state in {} iterations, {:.4} s (set-up included); {} → {}",
+                p.file,
+                state.iterations,
+                seconds,
+                probes.join(", "),
+                out.display()
+            );
+            if state.status != wearfem::steady::SteadyStatus::Solved {
+                return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); the last iterate was written", state.status, state.wear_residual)));
             }
         }
         Command::Examples { action, name } => match (action.as_deref(), name) {

@@ -236,3 +236,111 @@ pub fn write_wear(
         source: std::io::Error::other(m),
     })
 }
+
+/// Write a steady state: summary.json, steady.csv, pressure.svg and shape.svg.
+pub fn write_steady(
+    dir: &Path,
+    problem: &crate::problem::Problem,
+    contact: &crate::contact::CondensedContact,
+    state: &crate::steady::SteadyState,
+    seconds: f64,
+) -> Result<(), OutputError> {
+    use crate::plot::{line_plot, Series};
+    let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+    let reciprocating = !state.p_minus.is_empty();
+    let p_minus = if reciprocating {
+        state.p_minus.clone()
+    } else {
+        vec![0.0; x.len()]
+    };
+    let p_sum: Vec<f64> = state
+        .p_plus
+        .iter()
+        .zip(&p_minus)
+        .map(|(a, b)| a + b)
+        .collect();
+    let rigid_wear: serde_json::Map<String, Value> = contact
+        .rigid_names
+        .iter()
+        .zip(&state.rigid_wear)
+        .map(|(n, v)| (n.to_string(), number(*v)))
+        .collect();
+    let summary = json!({
+        "title": problem.spec.title,
+        "status": format!("{:?}", state.status),
+        "iterations": state.iterations,
+        "wear_residual": number(state.wear_residual),
+        "x": numbers(&x),
+        "p_plus": numbers(&state.p_plus),
+        "p_minus": numbers(&p_minus),
+        "p_sum": numbers(&p_sum),
+        "shape": numbers(&state.shape),
+        "rigid_wear_per_period": rigid_wear,
+        "seconds": seconds,
+    });
+    write_json(dir, "summary.json", &summary)?;
+    let rows: Vec<Vec<Value>> = (0..x.len())
+        .map(|i| {
+            vec![
+                number(x[i]),
+                number(state.p_plus[i]),
+                number(p_minus[i]),
+                number(p_sum[i]),
+                number(state.shape[i]),
+            ]
+        })
+        .collect();
+    write_csv(
+        dir,
+        "steady.csv",
+        &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"],
+        &rows,
+    )?;
+    let profile = |v: &[f64], scale: f64| {
+        x.iter()
+            .zip(v)
+            .map(|(&a, &b)| (a, b * scale))
+            .collect::<Vec<_>>()
+    };
+    let mut series = vec![Series {
+        label: "p+",
+        points: profile(&state.p_plus, 1.0),
+    }];
+    if reciprocating {
+        series.push(Series {
+            label: "p-",
+            points: profile(&p_minus, 1.0),
+        });
+        series.push(Series {
+            label: "p+ + p-",
+            points: profile(&p_sum, 1.0),
+        });
+    }
+    let path = dir.join("pressure.svg");
+    line_plot(
+        &path,
+        "Steady contact pressure",
+        "x (mm)",
+        "p (MPa)",
+        &series,
+    )
+    .map_err(|m| OutputError {
+        path: path.display().to_string(),
+        source: std::io::Error::other(m),
+    })?;
+    let path = dir.join("shape.svg");
+    line_plot(
+        &path,
+        "Steady worn shape",
+        "x (mm)",
+        "g (µm)",
+        &[Series {
+            label: "shape",
+            points: profile(&state.shape, 1000.0),
+        }],
+    )
+    .map_err(|m| OutputError {
+        path: path.display().to_string(),
+        source: std::io::Error::other(m),
+    })
+}

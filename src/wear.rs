@@ -343,6 +343,20 @@ impl WearIntegrator {
         })
     }
 
+    /// The wear of one half period (one monotonic step) as terms (c, b): Δw = Σ c pᵇ, with
+    /// c = β̃ ∫|v|ᵃ dτ (mm MPa⁻ᵇ), one term per wearing body.
+    pub fn half_period_wear(&self) -> Vec<(f64, f64)> {
+        self.laws
+            .iter()
+            .map(|l| (l.beta * self.sliding(l.a), l.b))
+            .collect()
+    }
+
+    /// Whether the sliding is monotonic (one direction) rather than reciprocating.
+    pub fn is_monotonic(&self) -> bool {
+        self.spec.sliding == "monotonic"
+    }
+
     /// Sliding integral ∫|v|ᵃ dτ of one half period (or one monotonic step).
     fn sliding(&self, a: f64) -> f64 {
         if self.spec.sliding == "monotonic" {
