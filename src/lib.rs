@@ -19,9 +19,13 @@
 //! | loads, post-processing | [`loads`], [`fields`] | [`loads::Traction`] |
 //! | problem files | [`problem`] | [`problem::Problem`] |
 //! | contact condensation | [`contact`] | [`contact::CondensedContact`] |
+//! | small dense LU, Lemke's method | [`dense`], [`lemke`] | [`dense::DenseLu`] |
 //! | contact solve | [`complementarity`] | [`complementarity::ContactSolver`] |
+//! | sliding kinematics, extrapolation | [`kinematics`] | [`kinematics::ScheduleEntry`] |
 //! | wear integration | [`wear`] | [`wear::WearIntegrator`] |
-//! | output | [`output`] | [`output::write_json`] |
+//! | steady worn state, directly | [`steady`] | [`steady::steady_state`] |
+//! | jobs (elastic, contact, run, steady) | [`driver`] | [`driver::WearRun`] |
+//! | output files and plots | [`output`], [`plot`] | [`output::write_wear`] |
 //!
 //! Units everywhere: mm, N, MPa (N/mm²), s.
 
@@ -35,6 +39,7 @@ pub mod elasticity;
 pub mod examples;
 pub mod fields;
 pub mod geometry;
+pub mod kinematics;
 pub mod lemke;
 pub mod loads;
 pub mod material;

@@ -10,6 +10,8 @@
 
 use crate::complementarity::{ContactSolution, ContactSolver, Direction, SolveInfo, Status};
 use crate::contact::{CondensedContact, ContactPoints};
+pub use crate::kinematics::ScheduleEntry;
+use crate::kinematics::{factor, half_period_sliding, paper_schedule, partial_sliding};
 use serde::{Deserialize, Serialize};
 
 /// Wear law parameters of one body: ẇ = β̃ pᵇ vᵃ (mm/s with p in MPa and v in mm/s).
@@ -28,17 +30,6 @@ pub struct WearLaw {
 
 fn one() -> f64 {
     1.0
-}
-
-/// One entry of the extrapolation schedule: factor `k` for steps up to `until` (inclusive;
-/// omitted on the last entry = for ever).
-#[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct ScheduleEntry {
-    /// Last step of this entry.
-    pub until: Option<usize>,
-    /// Extrapolation factor k ≥ 1 (half periods per step).
-    pub k: usize,
 }
 
 /// `[wear]` section of a problem file.
@@ -101,80 +92,6 @@ fn default_tolerance() -> f64 {
 }
 fn default_iterations() -> usize {
     50
-}
-
-/// The paper's schedule (eq. 30): k = 1 for n ≤ 50, 5 for n ≤ 100, 10 after.
-pub fn paper_schedule() -> Vec<ScheduleEntry> {
-    vec![
-        ScheduleEntry {
-            until: Some(50),
-            k: 1,
-        },
-        ScheduleEntry {
-            until: Some(100),
-            k: 5,
-        },
-        ScheduleEntry { until: None, k: 10 },
-    ]
-}
-
-/// Extrapolation factor of step n (1-based).
-pub fn factor(schedule: &[ScheduleEntry], n: usize) -> usize {
-    schedule
-        .iter()
-        .find(|e| e.until.is_none_or(|u| n <= u))
-        .map_or(1, |e| e.k)
-}
-
-/// Γ(x) for x > 0 (Lanczos, g = 7, 9 terms: relative error ~1e-15).
-fn gamma(x: f64) -> f64 {
-    const G: [f64; 9] = [
-        0.999_999_999_999_809_9,
-        676.520_368_121_885_1,
-        -1_259.139_216_722_402_8,
-        771.323_428_777_653_1,
-        -176.615_029_162_140_6,
-        12.507_343_278_686_905,
-        -0.138_571_095_265_720_12,
-        9.984_369_578_019_572e-6,
-        1.505_632_735_149_311_6e-7,
-    ];
-    if x < 0.5 {
-        return std::f64::consts::PI / ((std::f64::consts::PI * x).sin() * gamma(1.0 - x));
-    }
-    let x = x - 1.0;
-    let t = x + 7.5;
-    let sum: f64 = G[0]
-        + G.iter()
-            .enumerate()
-            .skip(1)
-            .map(|(i, g)| g / (x + i as f64))
-            .sum::<f64>();
-    (2.0 * std::f64::consts::PI).sqrt() * t.powf(x + 0.5) * (-t).exp() * sum
-}
-
-/// ∫ over one half period of |v|ᵃ dτ for u_τ = −u₀ cos ωτ: (u₀ω)ᵃ/ω · √π Γ((a+1)/2)/Γ(a/2+1)
-/// (mm^a s^(1−a)); equals 2u₀ for a = 1 (paper eq. 11).
-pub fn half_period_sliding(amplitude: f64, omega: f64, a: f64) -> f64 {
-    (amplitude * omega).powf(a) / omega * std::f64::consts::PI.sqrt() * gamma(0.5 * (a + 1.0))
-        / gamma(0.5 * a + 1.0)
-}
-
-/// The same integral over the sub-interval ωτ ∈ [θ₀, θ₁] ⊂ [0, π] (Gauss–Legendre, 24 points
-/// per sub-interval; exact closed form for a = 1).
-pub fn partial_sliding(amplitude: f64, omega: f64, a: f64, theta: [f64; 2]) -> f64 {
-    if a == 1.0 {
-        return amplitude * (theta[0].cos() - theta[1].cos());
-    }
-    let rule = crate::quadrature::gauss_legendre(24);
-    let half = 0.5 * (theta[1] - theta[0]);
-    let sum: f64 = rule
-        .points
-        .iter()
-        .zip(&rule.weights)
-        .map(|(x, w)| w * (theta[0] + half * (x + 1.0)).sin().powf(a))
-        .sum();
-    (amplitude * omega).powf(a) / omega * half * sum
 }
 
 /// Pressure profiles and shape at one step.
@@ -592,31 +509,4 @@ fn interpolation_weights(points: &ContactPoints, x0: f64) -> Vec<(usize, f64)> {
         .min_by(|&i, &j| (xs[i] - x0).abs().total_cmp(&(xs[j] - x0).abs()))
         .unwrap_or(0);
     vec![(nearest, 1.0)]
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn sliding_integral_is_two_amplitudes_for_a_equal_one() {
-        // Paper eq. 11: ∫|v| over a half period = 2u₀; Lanczos Γ is good to ~1e-15.
-        assert!((half_period_sliding(1.5, 10.0, 1.0) - 3.0).abs() < 1e-12);
-        // a = 2: (u₀ω)²/ω · π/2.
-        let exact = (1.5f64 * 10.0).powi(2) / 10.0 * std::f64::consts::FRAC_PI_2;
-        assert!((half_period_sliding(1.5, 10.0, 2.0) - exact).abs() < 1e-12 * exact);
-        // The partial integral over the whole half period agrees with the closed form.
-        let whole = partial_sliding(1.5, 10.0, 2.0, [0.0, std::f64::consts::PI]);
-        assert!((whole - exact).abs() < 1e-12 * exact);
-    }
-
-    #[test]
-    fn paper_schedule_counts_half_periods() {
-        // Eq. 30: step 100 ends half period 300, step 1700 ends 16 300.
-        let s = paper_schedule();
-        let count = |n: usize| (1..=n).map(|i| factor(&s, i)).sum::<usize>();
-        assert_eq!(count(50), 50);
-        assert_eq!(count(100), 300);
-        assert_eq!(count(1700), 16_300);
-    }
 }
