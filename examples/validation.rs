@@ -197,7 +197,15 @@ fn main() {
 
     println!("\n## Steady states computed directly (`wearfem steady`), against theory and the time integration\n");
     println!("| example | iterations | p⁺(M) or crown, MPa | steady p⁺+p⁻ vs theory (max abs, MPa) | max abs(steady − integrated) / peak |\n|---|---|---|---|---|");
-    for name in ["punch-a", "punch-b20", "punch-b40", "punch-b40-b1.2", "punch-b40-variant2", "punch-b40-variant3", "brake"] {
+    for name in [
+        "punch-a",
+        "punch-b20",
+        "punch-b40",
+        "punch-b40-b1.2",
+        "punch-b40-variant2",
+        "punch-b40-variant3",
+        "brake",
+    ] {
         let p = problem(name, &[]);
         let (state, contact, _) = driver::steady(&p).unwrap();
         let run = driver::wear(&p, None, |_| {}).unwrap();
@@ -206,10 +214,17 @@ fn main() {
             .map(|i| {
                 let x = contact.points.x[i][0];
                 match name {
-                    "punch-b40-variant2" => 2.0 * (10_000.0 / 600.0 * (1.0 + 12.0 * (35.0 - 30.0) * ((1130.0 - x) - 30.0) / 3600.0)),
-                    "punch-b40-variant3" => 2.0 * (10_000.0 / 600.0 * (1.0 + 12.0 * (38.75 - 30.0) * ((1130.0 - x) - 30.0) / 3600.0)),
+                    "punch-b40-variant2" => {
+                        2.0 * (10_000.0 / 600.0
+                            * (1.0 + 12.0 * (35.0 - 30.0) * ((1130.0 - x) - 30.0) / 3600.0))
+                    }
+                    "punch-b40-variant3" => {
+                        2.0 * (10_000.0 / 600.0
+                            * (1.0 + 12.0 * (38.75 - 30.0) * ((1130.0 - x) - 30.0) / 3600.0))
+                    }
                     "brake" => {
-                        let alpha = (-contact.points.normal[i][0]).atan2(-contact.points.normal[i][1]);
+                        let alpha =
+                            (-contact.points.normal[i][0]).atan2(-contact.points.normal[i][1]);
                         (state.p_plus[n / 2] + state.p_minus[n / 2]) * alpha.cos()
                     }
                     _ => 2.0 * 16.666,
@@ -219,14 +234,33 @@ fn main() {
         let dev = if name == "punch-b40-b1.2" {
             // Eq. 23b: (p⁺)ᵇ + (p⁻)ᵇ = 2 p_mᵇ with p_m the centre pressure.
             let pm = state.p_plus[n / 2];
-            (0..n).map(|i| (state.p_plus[i].powf(1.2) + state.p_minus[i].powf(1.2) - 2.0 * pm.powf(1.2)).abs()).fold(0.0, f64::max)
+            (0..n)
+                .map(|i| {
+                    (state.p_plus[i].powf(1.2) + state.p_minus[i].powf(1.2) - 2.0 * pm.powf(1.2))
+                        .abs()
+                })
+                .fold(0.0, f64::max)
         } else {
-            (0..n).map(|i| (state.p_plus[i] + state.p_minus[i] - theory[i]).abs()).fold(0.0, f64::max)
+            (0..n)
+                .map(|i| (state.p_plus[i] + state.p_minus[i] - theory[i]).abs())
+                .fold(0.0, f64::max)
         };
         let peak = state.p_plus.iter().cloned().fold(0.0, f64::max);
-        let diff = (0..n).map(|i| (state.p_plus[i] - run.history.p_plus[i]).abs().max((state.p_minus[i] - run.history.p_minus[i]).abs())).fold(0.0, f64::max) / peak;
+        let diff = (0..n)
+            .map(|i| {
+                (state.p_plus[i] - run.history.p_plus[i])
+                    .abs()
+                    .max((state.p_minus[i] - run.history.p_minus[i]).abs())
+            })
+            .fold(0.0, f64::max)
+            / peak;
         let probe = driver::contact_probes(&p, &contact)[0].1;
         let dev_text = format!("{dev:.1e}");
-        println!("| {name} | {} | {:.4} | {dev_text} | {:.2} % |", state.iterations, state.p_plus[probe], 100.0 * diff);
+        println!(
+            "| {name} | {} | {:.4} | {dev_text} | {:.2} % |",
+            state.iterations,
+            state.p_plus[probe],
+            100.0 * diff
+        );
     }
 }

@@ -106,7 +106,7 @@ pub struct CondensedContact {
     pub a_nn: Vec<f64>,
     /// n_iᵀ G τ_j, mm/N (N × N, row-major).
     pub a_nt: Vec<f64>,
-    /// Rigid modes: φ_k at each point (k-major: phi[k][i]).
+    /// Rigid modes: φ_k at each point (k-major: `phi[k][i]`).
     pub rigid_modes: Vec<Vec<Point>>,
     /// Names of the rigid unknowns ("lambda_F" mm, "lambda_M" rad).
     pub rigid_names: Vec<&'static str>,

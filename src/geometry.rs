@@ -176,7 +176,7 @@ pub enum EdgeShape {
 /// A curvilinear quadrilateral with corners c0..c3 counter-clockwise.
 ///
 /// Edges in counter-clockwise order: edge 0: c0→c1, 1: c1→c2, 2: c2→c3, 3: c3→c0. Parameter
-/// square (u, v) ∈ [0,1]²: c0 = (0,0), c1 = (1,0), c2 = (1,1), c3 = (0,1); edge 0 is v = 0,
+/// square (u, v) ∈ \[0, 1\]²: c0 = (0,0), c1 = (1,0), c2 = (1,1), c3 = (0,1); edge 0 is v = 0,
 /// edge 1 is u = 1, edge 2 is v = 1, edge 3 is u = 0.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Block {
