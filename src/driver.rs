@@ -149,12 +149,7 @@ pub fn contact(
     let setup = start.elapsed().as_secs_f64();
     let mut solver = ContactSolver::new(&contact, method(problem)?);
     let (solution, info) = solver.solve(&contact.points.initial_gap, direction(problem)?);
-    let rigid: serde_json::Map<String, Value> = contact
-        .rigid_names
-        .iter()
-        .zip(&solution.rigid)
-        .map(|(n, v)| (n.to_string(), number(*v)))
-        .collect();
+    let rigid = crate::output::named(&contact.rigid_names, &solution.rigid);
     let probes: serde_json::Map<String, Value> = contact_probes(problem, &contact)
         .into_iter()
         .map(|(n, i)| (n, number(solution.pressure[i])))

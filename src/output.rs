@@ -71,6 +71,111 @@ pub fn numbers(x: &[f64]) -> Value {
     Value::Array(x.iter().map(|&v| number(v)).collect())
 }
 
+/// A JSON object {name: value} of named numbers (rigid-body unknowns and the like).
+pub fn named(names: &[&str], values: &[f64]) -> Value {
+    Value::Object(
+        names
+            .iter()
+            .zip(values)
+            .map(|(n, v)| (n.to_string(), number(*v)))
+            .collect(),
+    )
+}
+
+fn plot_error(path: &Path) -> impl Fn(String) -> OutputError + '_ {
+    move |m| OutputError {
+        path: path.display().to_string(),
+        source: std::io::Error::other(m),
+    }
+}
+
+/// Pressure profiles of one cycle and the worn shape at the contact points.
+pub struct Profiles<'a> {
+    /// x of the contact points, mm.
+    pub x: &'a [f64],
+    /// '+' half-cycle pressure, MPa.
+    pub p_plus: &'a [f64],
+    /// '−' half-cycle pressure, MPa (None for monotonic sliding).
+    pub p_minus: Option<&'a [f64]>,
+    /// Worn shape, mm.
+    pub shape: &'a [f64],
+}
+
+impl Profiles<'_> {
+    /// Write `csv_name` (x, p⁺, p⁻, p⁺ + p⁻, shape) and the plots pressure.svg and shape.svg.
+    pub fn write(&self, dir: &Path, csv_name: &str, title: &str) -> Result<(), OutputError> {
+        use crate::plot::{line_plot, Series};
+        let zero = vec![0.0; self.x.len()];
+        let p_minus = self.p_minus.unwrap_or(&zero);
+        let p_sum: Vec<f64> = self
+            .p_plus
+            .iter()
+            .zip(p_minus)
+            .map(|(a, b)| a + b)
+            .collect();
+        let rows: Vec<Vec<Value>> = (0..self.x.len())
+            .map(|i| {
+                vec![
+                    number(self.x[i]),
+                    number(self.p_plus[i]),
+                    number(p_minus[i]),
+                    number(p_sum[i]),
+                    number(self.shape[i]),
+                ]
+            })
+            .collect();
+        write_csv(
+            dir,
+            csv_name,
+            &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"],
+            &rows,
+        )?;
+        let profile = |v: &[f64], scale: f64| {
+            self.x
+                .iter()
+                .zip(v)
+                .map(|(&a, &b)| (a, b * scale))
+                .collect::<Vec<_>>()
+        };
+        let mut series = vec![Series {
+            label: "p+",
+            points: profile(self.p_plus, 1.0),
+        }];
+        if self.p_minus.is_some() {
+            series.push(Series {
+                label: "p-",
+                points: profile(p_minus, 1.0),
+            });
+            series.push(Series {
+                label: "p+ + p-",
+                points: profile(&p_sum, 1.0),
+            });
+        }
+        let path = dir.join("pressure.svg");
+        line_plot(
+            &path,
+            &format!("{title}: contact pressure"),
+            "x (mm)",
+            "p (MPa)",
+            &series,
+        )
+        .map_err(plot_error(&path))?;
+        let path = dir.join("shape.svg");
+        let shape = [Series {
+            label: "shape",
+            points: profile(self.shape, 1000.0),
+        }];
+        line_plot(
+            &path,
+            &format!("{title}: worn shape (wear gap)"),
+            "x (mm)",
+            "g (µm)",
+            &shape,
+        )
+        .map_err(plot_error(&path))
+    }
+}
+
 /// Write everything a wear run produces into `dir`: summary.json, history.csv, final.csv,
 /// snapshots.csv and the plots pressure.svg, shape.svg, history.svg.
 pub fn write_wear(
@@ -81,16 +186,19 @@ pub fn write_wear(
     use crate::plot::{line_plot, Series};
     write_json(dir, "summary.json", &run.summary(problem))?;
     let h = &run.history;
-    let mut header = vec![
-        "step".to_string(),
-        "half_period".into(),
-        "direction".into(),
-        "k".into(),
-        "iterations".into(),
-        "criterion_percent".into(),
-        "dissipation_Nmm".into(),
-        "delta_w_mm".into(),
-    ];
+    let mut header: Vec<String> = [
+        "step",
+        "half_period",
+        "direction",
+        "k",
+        "iterations",
+        "criterion_percent",
+        "dissipation_Nmm",
+        "delta_w_mm",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
     header.extend(run.probes.iter().map(|(n, _)| format!("p_{n}_MPa")));
     let rows: Vec<Vec<Value>> = h
         .steps
@@ -113,23 +221,14 @@ pub fn write_wear(
     let header_refs: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
     write_csv(dir, "history.csv", &header_refs, &rows)?;
     let x: Vec<f64> = run.contact.points.x.iter().map(|p| p[0]).collect();
-    let rows: Vec<Vec<Value>> = (0..x.len())
-        .map(|i| {
-            vec![
-                number(x[i]),
-                number(h.p_plus[i]),
-                number(h.p_minus[i]),
-                number(h.p_plus[i] + h.p_minus[i]),
-                number(h.shape[i]),
-            ]
-        })
-        .collect();
-    write_csv(
-        dir,
-        "final.csv",
-        &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"],
-        &rows,
-    )?;
+    let monotonic = h.steps.iter().all(|s| s.direction == "+");
+    let profiles = Profiles {
+        x: &x,
+        p_plus: &h.p_plus,
+        p_minus: (!monotonic).then_some(&h.p_minus[..]),
+        shape: &h.shape,
+    };
+    profiles.write(dir, "final.csv", "Last cycle")?;
     let rows: Vec<Vec<Value>> = h
         .snapshots
         .iter()
@@ -158,57 +257,6 @@ pub fn write_wear(
         ],
         &rows,
     )?;
-    let profile = |v: &[f64], scale: f64| {
-        x.iter()
-            .zip(v)
-            .map(|(&a, &b)| (a, b * scale))
-            .collect::<Vec<_>>()
-    };
-    let p_sum: Vec<f64> = h
-        .p_plus
-        .iter()
-        .zip(&h.p_minus)
-        .map(|(a, b)| a + b)
-        .collect();
-    let plots = [
-        (
-            "pressure.svg",
-            "Contact pressure, last cycle",
-            "x (mm)",
-            "p (MPa)",
-            vec![
-                Series {
-                    label: "p+",
-                    points: profile(&h.p_plus, 1.0),
-                },
-                Series {
-                    label: "p-",
-                    points: profile(&h.p_minus, 1.0),
-                },
-                Series {
-                    label: "p+ + p-",
-                    points: profile(&p_sum, 1.0),
-                },
-            ],
-        ),
-        (
-            "shape.svg",
-            "Worn shape (wear gap)",
-            "x (mm)",
-            "g (µm)",
-            vec![Series {
-                label: "shape",
-                points: profile(&h.shape, 1000.0),
-            }],
-        ),
-    ];
-    for (name, title, xl, yl, series) in plots {
-        let path = dir.join(name);
-        line_plot(&path, title, xl, yl, &series).map_err(|m| OutputError {
-            path: path.display().to_string(),
-            source: std::io::Error::other(m),
-        })?;
-    }
     let series: Vec<Series> = run
         .probes
         .iter()
@@ -231,10 +279,7 @@ pub fn write_wear(
         "p (MPa)",
         &series,
     )
-    .map_err(|m| OutputError {
-        path: path.display().to_string(),
-        source: std::io::Error::other(m),
-    })
+    .map_err(plot_error(&path))
 }
 
 /// Write a steady state: summary.json, steady.csv, pressure.svg and shape.svg.
@@ -245,26 +290,12 @@ pub fn write_steady(
     state: &crate::steady::SteadyState,
     seconds: f64,
 ) -> Result<(), OutputError> {
-    use crate::plot::{line_plot, Series};
     let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
-    let reciprocating = !state.p_minus.is_empty();
-    let p_minus = if reciprocating {
-        state.p_minus.clone()
-    } else {
-        vec![0.0; x.len()]
+    let p_minus = (!state.p_minus.is_empty()).then_some(&state.p_minus[..]);
+    let p_sum: Vec<f64> = match p_minus {
+        Some(m) => state.p_plus.iter().zip(m).map(|(a, b)| a + b).collect(),
+        None => state.p_plus.clone(),
     };
-    let p_sum: Vec<f64> = state
-        .p_plus
-        .iter()
-        .zip(&p_minus)
-        .map(|(a, b)| a + b)
-        .collect();
-    let rigid_wear: serde_json::Map<String, Value> = contact
-        .rigid_names
-        .iter()
-        .zip(&state.rigid_wear)
-        .map(|(n, v)| (n.to_string(), number(*v)))
-        .collect();
     let summary = json!({
         "title": problem.spec.title,
         "status": format!("{:?}", state.status),
@@ -272,75 +303,18 @@ pub fn write_steady(
         "wear_residual": number(state.wear_residual),
         "x": numbers(&x),
         "p_plus": numbers(&state.p_plus),
-        "p_minus": numbers(&p_minus),
+        "p_minus": numbers(p_minus.unwrap_or(&[])),
         "p_sum": numbers(&p_sum),
         "shape": numbers(&state.shape),
-        "rigid_wear_per_period": rigid_wear,
+        "rigid_wear_per_period": named(&contact.rigid_names, &state.rigid_wear),
         "seconds": seconds,
     });
     write_json(dir, "summary.json", &summary)?;
-    let rows: Vec<Vec<Value>> = (0..x.len())
-        .map(|i| {
-            vec![
-                number(x[i]),
-                number(state.p_plus[i]),
-                number(p_minus[i]),
-                number(p_sum[i]),
-                number(state.shape[i]),
-            ]
-        })
-        .collect();
-    write_csv(
-        dir,
-        "steady.csv",
-        &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"],
-        &rows,
-    )?;
-    let profile = |v: &[f64], scale: f64| {
-        x.iter()
-            .zip(v)
-            .map(|(&a, &b)| (a, b * scale))
-            .collect::<Vec<_>>()
-    };
-    let mut series = vec![Series {
-        label: "p+",
-        points: profile(&state.p_plus, 1.0),
-    }];
-    if reciprocating {
-        series.push(Series {
-            label: "p-",
-            points: profile(&p_minus, 1.0),
-        });
-        series.push(Series {
-            label: "p+ + p-",
-            points: profile(&p_sum, 1.0),
-        });
+    Profiles {
+        x: &x,
+        p_plus: &state.p_plus,
+        p_minus,
+        shape: &state.shape,
     }
-    let path = dir.join("pressure.svg");
-    line_plot(
-        &path,
-        "Steady contact pressure",
-        "x (mm)",
-        "p (MPa)",
-        &series,
-    )
-    .map_err(|m| OutputError {
-        path: path.display().to_string(),
-        source: std::io::Error::other(m),
-    })?;
-    let path = dir.join("shape.svg");
-    line_plot(
-        &path,
-        "Steady worn shape",
-        "x (mm)",
-        "g (µm)",
-        &[Series {
-            label: "shape",
-            points: profile(&state.shape, 1000.0),
-        }],
-    )
-    .map_err(|m| OutputError {
-        path: path.display().to_string(),
-        source: std::io::Error::other(m),
-    })
+    .write(dir, "steady.csv", "Steady state")
 }
