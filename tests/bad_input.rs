@@ -7,15 +7,17 @@ fn baseline() -> String {
     wearfem::examples::example("lame").unwrap().to_string()
 }
 
-/// Run `wearfem elastic` on `text`; returns (exit code, stderr).
-fn run(text: &str, tag: &str) -> (i32, String) {
+/// Write `text` to `<tag>.toml` in a fresh directory and run `wearfem <command> FILE <extra>`;
+/// returns (exit code, stderr).
+fn run_cli(command: &str, extra: &[&str], text: &str, tag: &str) -> (i32, String) {
     let dir = std::env::temp_dir().join(format!("wearfem-bad-{tag}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join(format!("{tag}.toml"));
     std::fs::write(&file, text).unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
-        .arg("elastic")
+        .arg(command)
         .arg(&file)
+        .args(extra)
         .arg("--out")
         .arg(dir.join("out"))
         .output()
@@ -24,6 +26,10 @@ fn run(text: &str, tag: &str) -> (i32, String) {
         out.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&out.stderr).to_string(),
     )
+}
+
+fn run(text: &str, tag: &str) -> (i32, String) {
+    run_cli("elastic", &[], text, tag)
 }
 
 fn expect_error(text: &str, tag: &str, must_contain: &[&str]) {
@@ -126,27 +132,6 @@ fn nan_thickness() {
     );
 }
 
-/// Run `wearfem run` on an edited punch-b40 file; returns (exit code, stderr).
-fn run_wear(text: &str, tag: &str) -> (i32, String) {
-    let dir = std::env::temp_dir().join(format!("wearfem-badrun-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join(format!("{tag}.toml"));
-    std::fs::write(&file, text).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
-        .arg("run")
-        .arg(&file)
-        .arg("--steps")
-        .arg("2")
-        .arg("--out")
-        .arg(dir.join("out"))
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stderr).to_string(),
-    )
-}
-
 #[test]
 fn broken_contact_plate_and_wear_sections() {
     let base = wearfem::examples::example("punch-b40").unwrap();
@@ -178,7 +163,7 @@ fn broken_contact_plate_and_wear_sections() {
     for (k, (from, to, key)) in cases.iter().enumerate() {
         assert!(base.contains(from), "baseline lacks '{from}'");
         let tag = format!("wear{k}");
-        let (code, err) = run_wear(&base.replace(from, to), &tag);
+        let (code, err) = run_cli("run", &["--steps", "2"], &base.replace(from, to), &tag);
         assert_eq!(code, 2, "{key}: exit {code}: {err}");
         assert!(
             err.contains(key) && err.contains(&format!("{tag}.toml")),
