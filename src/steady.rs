@@ -291,3 +291,38 @@ pub fn steady_state(
         wear_residual: wear_residual / wear_scale.max(f64::MIN_POSITIVE),
     })
 }
+
+/// The summed-pressure theory (paper eq. 16–19, A.13–A.16) for b = 1: in the periodic steady
+/// state p⁺ + p⁻ is a rigid-body wear pattern, p_Σ,i = Σ_k a_k r_k(i) with r_k(i) = −R(i,k)
+/// (1 under a flat punch, x̃ for the rotation, cos α on an arc), whose amplitudes a_k follow
+/// from the equilibrium of the summed loads with the friction terms dropped (exact for a flat
+/// contact, where they cancel; Remark 3 of Appendix A otherwise). Returns p_Σ in MPa at every
+/// contact point, or `None` without rigid-body freedom.
+pub fn summed_pressure_theory(contact: &CondensedContact) -> Option<Vec<f64>> {
+    let (n, m) = (contact.len(), contact.rigid_modes.len());
+    if m == 0 {
+        return None;
+    }
+    let area = contact.areas();
+    let r = contact.rigid_gap_matrix();
+    // Frictionless summed equilibrium: Σ_i −R(i,k) S_i area_i = 2 L_k with S_i = Σ_l a_l (−R(i,l)),
+    // since E = Rᵀ when μ = 0 and the plate carries twice its load over a period.
+    let mut lu = DenseLu::default();
+    let mat = lu.storage(m);
+    for k in 0..m {
+        for l in 0..m {
+            mat[k * m + l] = (0..n).map(|i| r[i * m + k] * r[i * m + l] * area[i]).sum();
+        }
+    }
+    if !lu.factor_in_place() {
+        return None;
+    }
+    let mut amplitude: Vec<f64> = contact.plate_load.iter().map(|l| 2.0 * l).collect();
+    let mut scratch = vec![0.0; m];
+    lu.solve_in_place(&mut amplitude, &mut scratch);
+    Some(
+        (0..n)
+            .map(|i| -(0..m).map(|k| r[i * m + k] * amplitude[k]).sum::<f64>())
+            .collect(),
+    )
+}

@@ -141,3 +141,36 @@ fn monotonic_steady_state_is_the_wear_dissipation_optimum() {
         );
     }
 }
+
+#[test]
+fn summed_pressure_theory_is_eq_19_and_matches_the_steady_state() {
+    use wearfem::steady::summed_pressure_theory;
+    // Flat punch: eq. 19 in closed form (variant 2: F0 = 10 kN at x̃_F = 35 mm).
+    let p = problem("punch-b40-variant2", &[]);
+    let (contact, _, _) = wearfem::contact::CondensedContact::build(&p).unwrap();
+    let theory = summed_pressure_theory(&contact).unwrap();
+    let (l, sc, f0, xf) = (60.0, 600.0, 10_000.0, 35.0);
+    let c = f0 / sc - 3.0 * f0 * (-l + 2.0 * xf) / (l * sc);
+    let slope = 6.0 * f0 * (-l + 2.0 * xf) / (l * l * sc);
+    for (x, t) in contact.points.x.iter().zip(&theory) {
+        // Eq. 19 integrates exactly what the Lobatto weights integrate (linear pressure): round-off.
+        let line = 2.0 * (c + slope * (1130.0 - x[0]));
+        assert!(
+            (t - line).abs() < 1e-9 * 50.0,
+            "x = {}: {t} vs {line}",
+            x[0]
+        );
+    }
+    // The brake: the friction terms of A.15 do not cancel on the arc; Remark 3 says they are
+    // small. The direct steady state includes them: within 0.5 %.
+    let p = problem("brake", &[]);
+    let (state, contact, _) = driver::steady(&p).unwrap();
+    let theory = summed_pressure_theory(&contact).unwrap();
+    for (i, t) in theory.iter().enumerate() {
+        let sum = state.p_plus[i] + state.p_minus[i];
+        assert!(
+            (t - sum).abs() < 5e-3 * theory[theory.len() / 2],
+            "point {i}: theory {t}, steady {sum}"
+        );
+    }
+}
