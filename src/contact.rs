@@ -165,12 +165,13 @@ impl ContactPoints {
     fn on_body1(
         body: &ElasticBody,
         edges: &[(usize, usize)],
-        thickness_unused: f64,
-    ) -> (ContactPoints, Vec<Trace>) {
-        let _ = thickness_unused;
+    ) -> Option<(ContactPoints, Vec<Trace>)> {
         let p = body.dofs.p;
         let rule = gauss_lobatto(p + 1);
         let chain = chain_edge(body, edges);
+        if chain.len() != edges.len() {
+            return None;
+        }
         let mut pts = ContactPoints {
             x: vec![],
             weight: vec![],
@@ -217,7 +218,7 @@ impl ContactPoints {
             pts.weight.reverse();
             traces.reverse();
         }
-        (pts, traces)
+        Some((pts, traces))
     }
 }
 
@@ -364,7 +365,15 @@ impl CondensedContact {
             .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
             .to_vec();
         let t = problem.analysis.thickness();
-        let (mut points, traces1) = ContactPoints::on_body1(body1, &edge1, t);
+        let (mut points, traces1) = ContactPoints::on_body1(body1, &edge1).ok_or_else(|| {
+            problem.error(
+                "contact.edge",
+                format!(
+                    "edge \"{}\" of body 1 is not one connected line of element edges",
+                    c.edge
+                ),
+            )
+        })?;
         let mut traces2 = Vec::with_capacity(points.x.len());
         for i in 0..points.x.len() {
             let (s, tr) = project_on_body2(body2, &edge2, points.x[i], points.normal[i]).ok_or_else(|| {
@@ -376,6 +385,24 @@ impl CondensedContact {
             });
             points.initial_gap.push(s + shape);
             traces2.push(tr);
+        }
+        // Loads on the bodies themselves (all tractions but the plate's, which load the plate)
+        // move the contact points before any contact force acts: their normal displacements
+        // enter the gap, d = u_n⁽²⁾ − u_n⁽¹⁾ + g.
+        let plate_edge: Vec<&str> = plate.iter().map(|p| p.edge.as_str()).collect();
+        for (b, body, traces, sign) in [(b1, body1, &traces1, -1.0), (b2, body2, &traces2, 1.0)] {
+            let load = problem.load_vector(b, body, &plate_edge)?;
+            if load.iter().any(|f| *f != 0.0) {
+                let u = body.solve(&load).boundary;
+                for (i, tr) in traces.iter().enumerate() {
+                    let n = points.normal[i];
+                    let un: f64 = tr
+                        .iter()
+                        .map(|&(g, coef)| coef * (u[g[0]] * n[0] + u[g[1]] * n[1]))
+                        .sum();
+                    points.initial_gap[i] += sign * un;
+                }
+            }
         }
         let g1 = flexibility(body1, &traces1);
         let g2 = flexibility(body2, &traces2);
@@ -495,9 +522,16 @@ fn plate_modes(
         }
         (_, Some(p)) => p,
         (_, None) => {
-            // Moments are reported about the plate edge's mid point when no pin is given.
-            let (e, l) = plate_edges[plate_edges.len() / 2];
-            body1.mesh.point_on_edge(e, l, 0.0)
+            // Without a pin, moments are reported about the plate edge's centroid.
+            let (mut sum, mut length) = ([0.0; 2], 0.0);
+            for &(e, l) in plate_edges {
+                for (t, ds) in crate::loads::edge_quadrature(&body1.mesh, e, l, None, 4) {
+                    let x = body1.mesh.point_on_edge(e, l, t);
+                    sum = [sum[0] + x[0] * ds, sum[1] + x[1] * ds];
+                    length += ds;
+                }
+            }
+            [sum[0] / length, sum[1] / length]
         }
     };
     let translation = |_: Point| [0.0, -1.0];
@@ -523,14 +557,17 @@ fn plate_modes(
     let mut moment = 0.0;
     let mut load = vec![0.0; modes.len()];
     let t = problem.analysis.thickness();
-    for tr in problem
-        .tractions(b1)?
-        .iter()
-        .filter(|tr| tr.edge == pl.edge)
-    {
+    // Every load on body 1 reaches the plate (body 1 is clamped to it): all enter L_k.
+    for (k, tr) in problem.tractions(b1)?.iter().enumerate() {
+        let edges = problem.named_edge(
+            &body1.mesh,
+            b1,
+            &tr.edge,
+            &format!("bodies[{b1}].tractions[{k}].edge"),
+        )?;
         tr.for_each_point(
             &body1.mesh,
-            plate_edges,
+            edges,
             body1.dofs.p,
             t,
             |_, _, _, x, trac, w| {

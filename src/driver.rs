@@ -170,10 +170,7 @@ pub fn contact(
         "plate_moment": number(contact.plate_resultant.1),
         "setup_seconds": setup,
     });
-    if info.status == Status::Failed {
-        // Keep what was computed; the caller reports the failure.
-        return Ok((summary, contact, solution, info));
-    }
+    // A failed solve is returned too (status in `info`): the caller writes it and says so.
     Ok((summary, contact, solution, info))
 }
 
@@ -206,8 +203,9 @@ pub fn wear(
     if let Some(n) = steps {
         spec.steps = n;
     }
-    let integrator =
+    let mut integrator =
         WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
+    integrator.first_direction = direction(problem)?;
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
     let mut solver = ContactSolver::new(&contact, method(problem)?);
@@ -291,6 +289,12 @@ pub fn steady(
         integrator.is_monotonic(),
         Default::default(),
     )
-    .map_err(|e| problem.error("plate.motion", e.to_string()))?;
+    .map_err(|e| {
+        let key = match e {
+            crate::steady::SteadyError::NoRigidMotion => "plate.motion",
+            crate::steady::SteadyError::NoWear => "wear.body1.beta",
+        };
+        problem.error(key, e.to_string())
+    })?;
     Ok((state, contact, start.elapsed().as_secs_f64()))
 }

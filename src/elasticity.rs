@@ -21,7 +21,7 @@ use std::collections::HashMap;
 #[derive(Debug, thiserror::Error)]
 pub enum ElasticityError {
     /// The stiffness matrix is not positive definite: the body can move as a rigid body.
-    #[error("the stiffness matrix of body '{body}' is singular: the supports do not prevent rigid-body motion")]
+    #[error("the stiffness matrix of body \"{body}\" is singular: the supports do not prevent rigid-body motion")]
     Singular { body: String },
     /// An internal-mode block failed to factorise (a degenerate element).
     #[error("element {element}: internal-mode stiffness is not positive definite")]

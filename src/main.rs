@@ -179,7 +179,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 .collect();
             println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '+' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
             if h.failed_solves > 0 || h.unconverged_steps > 0 {
-                return Err(Failure::Compute(format!("{} contact solves failed and {} steps missed criterion eq. 27; results kept in {}", h.failed_solves, h.unconverged_steps, out.display())));
+                return Err(Failure::Compute(format!("{} contact solves failed and {} steps missed the implicit criterion (wear.criterion); results kept in {}", h.failed_solves, h.unconverged_steps, out.display())));
             }
         }
         Command::Steady { problem, out } => {

@@ -55,7 +55,10 @@ pub struct MaterialSpec {
 
 /// One number, or two (start and end of a linear variation).
 #[derive(Clone, Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "a number, or a list of two numbers (values at the window's bounds)"
+)]
 pub enum OneOrTwo {
     /// Constant value.
     One(f64),
@@ -74,7 +77,10 @@ impl OneOrTwo {
 
 /// Mesh lines along one block direction: a number of equal divisions or explicit parameters.
 #[derive(Clone, Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "a whole number of equal divisions, or a list of rising parameters from 0 to 1"
+)]
 pub enum LinesSpec {
     /// Equal divisions.
     Count(usize),
@@ -326,6 +332,25 @@ impl Problem {
         }
         if spec.bodies.is_empty() {
             return Err(err("bodies", "at least one body is needed".into()));
+        }
+        for (b, body) in spec.bodies.iter().enumerate() {
+            if body.blocks.is_empty() {
+                return Err(err(
+                    &format!("bodies[{b}].blocks"),
+                    format!("body \"{}\" has no blocks", body.name),
+                ));
+            }
+            if spec.bodies[..b].iter().any(|other| other.name == body.name) {
+                return Err(err(
+                    &format!("bodies[{b}].name"),
+                    format!("two bodies are called \"{}\"", body.name),
+                ));
+            }
+        }
+        if let Some(shape) = spec.contact.as_ref().and_then(|c| c.initial_shape) {
+            if !(shape.radius.is_finite() && shape.radius > 0.0 && shape.center_x.is_finite()) {
+                return Err(err("contact.initial_shape", format!("radius must be a positive length (mm) and center_x finite, got radius {} and center_x {}", shape.radius, shape.center_x)));
+            }
         }
         let problem = Problem {
             file: file.into(),

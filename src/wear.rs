@@ -141,7 +141,7 @@ pub struct WearHistory {
     pub steps: Vec<StepRecord>,
     /// Snapshots at the requested steps.
     pub snapshots: Vec<Snapshot>,
-    /// Pressure of the last '+' step, MPa.
+    /// Pressure of the last '+' step (of the last step for monotonic sliding), MPa.
     pub p_plus: Vec<f64>,
     /// Pressure of the last '−' step, MPa.
     pub p_minus: Vec<f64>,
@@ -162,6 +162,8 @@ pub struct WearIntegrator {
     pub spec: WearSpec,
     schedule: Vec<ScheduleEntry>,
     laws: Vec<WearLaw>,
+    /// Sliding direction of the first (odd) steps; default '+'.
+    pub first_direction: Direction,
 }
 
 impl WearIntegrator {
@@ -253,10 +255,25 @@ impl WearIntegrator {
         if schedule.is_empty() || schedule.iter().any(|e| e.k == 0) {
             return bad("extrapolation", "needs entries with k ≥ 1".into());
         }
+        let bounds: Vec<usize> = schedule.iter().filter_map(|e| e.until).collect();
+        if bounds.windows(2).any(|w| w[1] <= w[0])
+            || schedule[..schedule.len() - 1]
+                .iter()
+                .any(|e| e.until.is_none())
+        {
+            return bad(
+                "extrapolation",
+                "`until` must rise from entry to entry; only the last entry may omit it".into(),
+            );
+        }
+        if spec.shape_zero_at.is_some_and(|x| !x.is_finite()) {
+            return bad("shape_zero_at", "must be a finite x coordinate (mm)".into());
+        }
         Ok(WearIntegrator {
             spec: spec.clone(),
             schedule,
             laws,
+            first_direction: Direction::Plus,
         })
     }
 
@@ -337,10 +354,12 @@ impl WearIntegrator {
                 .sum::<f64>()
         };
         for step in 1..=self.spec.steps {
-            let direction = if monotonic || step % 2 == 1 {
-                Direction::Plus
+            // Odd steps slide in the first direction (contact.direction), even ones back.
+            let first_half = monotonic || step % 2 == 1;
+            let direction = if first_half {
+                self.first_direction
             } else {
-                Direction::Minus
+                self.first_direction.reversed()
             };
             let k = factor(&self.schedule, step);
             half_periods += k;
@@ -436,13 +455,14 @@ impl WearIntegrator {
                 .sum::<f64>()
                 * contact.thickness;
             let mut delta_w = 0.0;
-            if direction == Direction::Plus && !monotonic {
-                cycle_wear.copy_from_slice(&increment);
+            if direction == Direction::Plus || monotonic {
                 hist.p_plus.copy_from_slice(&sol.pressure);
             } else {
-                if !monotonic {
-                    hist.p_minus.copy_from_slice(&sol.pressure);
-                }
+                hist.p_minus.copy_from_slice(&sol.pressure);
+            }
+            if first_half && !monotonic {
+                cycle_wear.copy_from_slice(&increment);
+            } else {
                 for i in 0..n {
                     cycle_wear[i] += increment[i];
                 }
@@ -462,9 +482,6 @@ impl WearIntegrator {
                         }
                     }
                 }
-            }
-            if monotonic {
-                hist.p_plus.copy_from_slice(&sol.pressure);
             }
             let record = StepRecord {
                 step,

@@ -261,3 +261,37 @@ fn hertz_line_contact() {
         );
     }
 }
+
+#[test]
+fn loads_on_body_1_outside_the_plate_enter_the_plate_equilibrium() {
+    // 2 MPa on the punch's left side (x = 1070, 100 ≤ z ≤ 120) pushes it by F_x = 400 N at
+    // z = 110, a moment of (110 − 140)·400 = −12 000 N·mm about the pin. Moment equilibrium
+    // (eq. 8) then puts the pressure centre at 1100 − μ l_z + M/F0.
+    let text = wearfem::examples::example("punch-b40")
+        .unwrap()
+        .replace("names = { bottom = \"contact\" }", "names = { bottom = \"contact\", left = \"side\" }")
+        .replace("[[bodies.tractions]]\nedge = \"top\"", "[[bodies.tractions]]\nedge = \"side\"\nnormal = 2.0\n\n[[bodies.tractions]]\nedge = \"top\"");
+    let problem = Problem::from_toml(&text, "side-load").unwrap();
+    let (contact, _, _) = CondensedContact::build(&problem).unwrap();
+    let (sol, info) = ContactSolver::new(&contact, Method::ActiveSet)
+        .solve(&contact.points.initial_gap, Direction::Plus);
+    assert_eq!(info.status, Status::Solved);
+    let total: f64 = sol.force.iter().sum();
+    assert!(
+        (total - 9999.6).abs() < 1e-8 * 9999.6,
+        "ΣP = {total}: a horizontal load must not change it"
+    );
+    let centre: f64 = contact
+        .points
+        .x
+        .iter()
+        .zip(&sol.force)
+        .map(|(x, f)| x[0] * f)
+        .sum::<f64>()
+        / total;
+    let expected = 1100.0 - 0.25 * 40.0 - 12_000.0 / 9999.6;
+    assert!(
+        (centre - expected).abs() < 1e-9 * 1100.0,
+        "centre {centre}, expected {expected}"
+    );
+}

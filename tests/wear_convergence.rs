@@ -96,3 +96,16 @@ fn substrate_wear_adds_to_punch_wear_in_the_gap() {
         assert!((a - b).abs() < 1e-9 * a.abs().max(1.0), "{a} vs {b}");
     }
 }
+
+#[test]
+fn run_starts_in_the_problems_sliding_direction() {
+    let r = run(
+        &problem(
+            "punch-b40",
+            &[("friction = 0.25", "friction = 0.25\ndirection = \"-\"")],
+        ),
+        Some(4),
+    );
+    let directions: Vec<&str> = r.history.steps.iter().map(|s| s.direction).collect();
+    assert_eq!(directions, ["-", "+", "-", "+"]);
+}
