@@ -336,6 +336,13 @@ impl CondensedContact {
         if b1 == b2 {
             return Err(problem.error("contact.target_body", "must differ from contact.body"));
         }
+        if problem.spec.plate.is_some() && !problem.spec.bodies[b1].supports.is_empty() {
+            // The plate equilibrium counts every load on body 1; a support would take some.
+            return Err(problem.error(
+                format!("bodies[{b1}].supports"),
+                "body 1 is held by the [plate]; it may not have supports of its own",
+            ));
+        }
         Ok((c, b1, b2))
     }
 
