@@ -113,6 +113,37 @@ struct Cached {
     valid: bool,
 }
 
+/// Build and factorise the reduced system [A_II R_I; E_I 0] of the points `index` into `lu`;
+/// false if it is singular.
+fn reduced_system(
+    lu: &mut DenseLu,
+    a: &[f64],
+    e: &[f64],
+    r: &[f64],
+    index: &[usize],
+    (n, m): (usize, usize),
+) -> bool {
+    let na = index.len();
+    let size = na + m;
+    let mat = lu.storage(size);
+    for (row, &i) in index.iter().enumerate() {
+        let (a_row, out) = (
+            &a[i * n..(i + 1) * n],
+            &mut mat[row * size..(row + 1) * size],
+        );
+        for (col, &j) in index.iter().enumerate() {
+            out[col] = a_row[j];
+        }
+        out[na..].copy_from_slice(&r[i * m..(i + 1) * m]);
+    }
+    for k in 0..m {
+        for (col, &j) in index.iter().enumerate() {
+            mat[(na + k) * size + col] = e[k * n + j];
+        }
+    }
+    lu.factor_in_place()
+}
+
 /// A reusable solver for one condensed contact problem.
 pub struct ContactSolver {
     n: usize,
@@ -130,6 +161,9 @@ pub struct ContactSolver {
     penalty_compliance: Vec<f64>,
     area: Vec<f64>,
     cache: [Cached; 2],
+    /// The all-active reduced systems, factorised once at set-up: every cold start begins
+    /// with them. `None` where singular.
+    full: [Option<DenseLu>; 2],
     rhs: Vec<f64>,
     scratch: Vec<f64>,
     index: Vec<usize>,
@@ -163,7 +197,7 @@ impl ContactSolver {
             lu: DenseLu::default(),
             valid: false,
         };
-        ContactSolver {
+        let mut solver = ContactSolver {
             n,
             m,
             method,
@@ -178,11 +212,27 @@ impl ContactSolver {
             penalty_compliance,
             area,
             cache: [cached(), cached()],
+            full: [None, None],
             rhs: Vec::with_capacity(n + m),
             scratch: vec![0.0; n + m],
             index: Vec::with_capacity(n),
             max_iterations: 30 + n,
+        };
+        let all: Vec<usize> = (0..n).collect();
+        for dir in 0..2 {
+            let mut lu = DenseLu::default();
+            if reduced_system(
+                &mut lu,
+                &solver.a[dir],
+                &solver.e[dir],
+                &solver.r,
+                &all,
+                (n, m),
+            ) {
+                solver.full[dir] = Some(lu);
+            }
         }
+        solver
     }
 
     /// Number of contact points.
@@ -257,8 +307,11 @@ impl ContactSolver {
         out.active.copy_from_slice(&self.cache[dir].active);
         for _ in 0..self.max_iterations {
             info.iterations += 1;
-            if !self.cache[dir].valid || self.cache[dir].active != out.active {
-                self.factorise(dir, &out.active.clone());
+            let all_active = out.active.iter().all(|&a| a) && self.full[dir].is_some();
+            if !all_active && (!self.cache[dir].valid || self.cache[dir].active != out.active) {
+                let active = std::mem::take(&mut out.active);
+                self.factorise(dir, &active);
+                out.active = active;
                 info.factorisations += 1;
                 if !self.cache[dir].valid {
                     return false;
@@ -271,9 +324,11 @@ impl ContactSolver {
             self.rhs.extend(self.index.iter().map(|&i| -gap[i]));
             self.rhs.extend(self.load.iter().map(|l| -l));
             let size = self.index.len() + m;
-            self.cache[dir]
-                .lu
-                .solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
+            let lu = match &self.full[dir] {
+                Some(full) if all_active => full,
+                _ => &self.cache[dir].lu,
+            };
+            lu.solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
             if self.rhs.iter().any(|v| !v.is_finite()) {
                 return false;
             }
@@ -307,28 +362,17 @@ impl ContactSolver {
 
     /// Build and factorise the reduced system [A_AA R_A; E_A 0] for active set `active`.
     fn factorise(&mut self, dir: usize, active: &[bool]) {
-        let (n, m) = (self.n, self.m);
         self.index.clear();
-        self.index.extend((0..n).filter(|&i| active[i]));
-        let na = self.index.len();
-        let size = na + m;
-        let (a, e, r) = (&self.a[dir], &self.e[dir], &self.r);
+        self.index.extend((0..self.n).filter(|&i| active[i]));
         let cache = &mut self.cache[dir];
-        let mat = cache.lu.storage(size);
-        for (row, &i) in self.index.iter().enumerate() {
-            for (col, &j) in self.index.iter().enumerate() {
-                mat[row * size + col] = a[i * n + j];
-            }
-            for k in 0..m {
-                mat[row * size + na + k] = r[i * m + k];
-            }
-        }
-        for k in 0..m {
-            for (col, &j) in self.index.iter().enumerate() {
-                mat[(na + k) * size + col] = e[k * n + j];
-            }
-        }
-        cache.valid = cache.lu.factor_in_place();
+        cache.valid = reduced_system(
+            &mut cache.lu,
+            &self.a[dir],
+            &self.e[dir],
+            &self.r,
+            &self.index,
+            (self.n, self.m),
+        );
         cache.active.clear();
         cache.active.extend_from_slice(active);
     }
