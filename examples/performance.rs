@@ -10,7 +10,11 @@ use wearfem::driver;
 use wearfem::problem::Problem;
 
 fn main() {
-    let p = Problem::from_toml(wearfem::examples::example("punch-b40").unwrap(), "punch-b40").unwrap();
+    let p = Problem::from_toml(
+        wearfem::examples::example("punch-b40").unwrap(),
+        "punch-b40",
+    )
+    .unwrap();
     let t = Instant::now();
     let (b1, b2) = CondensedContact::bodies(&p).unwrap();
     let bodies = t.elapsed().as_secs_f64();
@@ -18,14 +22,21 @@ fn main() {
         let i = &b.info;
         println!("body {:6}: {} elements, {} unknowns before condensation, {} condensed, {} distinct element matrices, {} non-zeros", b.name, b.mesh.elements.len(), i.total_dofs, i.condensed_dofs, i.distinct_elements, i.nonzeros);
     }
-    println!("total unknowns before condensation: {}", b1.info.total_dofs + b2.info.total_dofs);
+    println!(
+        "total unknowns before condensation: {}",
+        b1.info.total_dofs + b2.info.total_dofs
+    );
     let t = Instant::now();
     let contact = CondensedContact::from_bodies(&p, &b1, &b2).unwrap();
     let flexibility = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let _solver = ContactSolver::new(&contact, Method::ActiveSet);
     let solver_setup = t.elapsed().as_secs_f64();
-    println!("contact points: {}, rigid unknowns: {}", contact.len(), contact.rigid_modes.len());
+    println!(
+        "contact points: {}, rigid unknowns: {}",
+        contact.len(),
+        contact.rigid_modes.len()
+    );
     println!("phase times (one run, s): bodies {bodies:.4}, flexibility {flexibility:.4}, solver set-up {solver_setup:.5}");
     let run = driver::wear(&p, None, |_| {}).unwrap();
     let h = &run.history;

@@ -17,7 +17,7 @@
 //! | dof numbering | [`dofs`] | [`dofs::DofMap`] |
 //! | elasticity, condensation, factorisation | [`elasticity`] | [`elasticity::ElasticBody`] |
 //! | loads, post-processing | [`loads`], [`fields`] | [`loads::Traction`] |
-//! | problem files | [`problem`] | [`problem::Problem`] |
+//! | problem files: schema, validation, model | [`schema`], [`problem`] | [`problem::Problem`] |
 //! | contact condensation | [`contact`] | [`contact::CondensedContact`] |
 //! | small dense LU, Lemke's method | [`dense`], [`lemke`] | [`dense::DenseLu`] |
 //! | contact solve | [`complementarity`] | [`complementarity::ContactSolver`] |
@@ -48,5 +48,6 @@ pub mod output;
 pub mod plot;
 pub mod problem;
 pub mod quadrature;
+pub mod schema;
 pub mod steady;
 pub mod wear;

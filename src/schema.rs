@@ -1,0 +1,210 @@
+//! The problem-file schema: the serde structures that a TOML problem file is read into.
+//! Validation and the construction of the model are in [`crate::problem`].
+
+use crate::geometry::Point;
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// `[analysis]`: the 2D idealisation and the discretisation.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AnalysisSpec {
+    /// "plane_stress" or "plane_strain".
+    pub kind: String,
+    /// Out-of-plane thickness, mm.
+    pub thickness: f64,
+    /// Polynomial degree p (1..=20).
+    pub p: usize,
+    /// "tensor" (default) or "trunk".
+    #[serde(default = "default_space")]
+    pub space: String,
+}
+
+fn default_space() -> String {
+    "tensor".into()
+}
+
+/// `[materials.NAME]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSpec {
+    /// Young's modulus, MPa (> 0).
+    pub young: f64,
+    /// Poisson's ratio (−1 < ν < 0.5).
+    pub poisson: f64,
+}
+
+/// One number, or two (start and end of a linear variation).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "a number, or a list of two numbers (values at the window's bounds)"
+)]
+pub enum OneOrTwo {
+    /// Constant value.
+    One(f64),
+    /// Values at the lower and upper window bound.
+    Two([f64; 2]),
+}
+
+impl OneOrTwo {
+    /// The values at the lower and upper bound (equal for a constant).
+    pub fn pair(&self) -> [f64; 2] {
+        match *self {
+            OneOrTwo::One(v) => [v, v],
+            OneOrTwo::Two(v) => v,
+        }
+    }
+}
+
+/// Mesh lines along one block direction: a number of equal divisions or explicit parameters.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "a whole number of equal divisions, or a list of rising parameters from 0 to 1"
+)]
+pub enum LinesSpec {
+    /// Equal divisions.
+    Count(usize),
+    /// Parameters in [0, 1], rising, 0 and 1 included.
+    List(Vec<f64>),
+}
+
+/// An arc edge of a block.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ArcSpec {
+    /// Block edge 0..=3 (0: c0→c1, 1: c1→c2, 2: c2→c3, 3: c3→c0).
+    pub edge: usize,
+    /// Arc centre [x, z], mm.
+    pub center: Point,
+}
+
+/// Names of block edges.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EdgeNames {
+    /// Edge 0 (c0→c1).
+    pub bottom: Option<String>,
+    /// Edge 1 (c1→c2).
+    pub right: Option<String>,
+    /// Edge 2 (c2→c3).
+    pub top: Option<String>,
+    /// Edge 3 (c3→c0).
+    pub left: Option<String>,
+}
+
+/// `[[bodies.blocks]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BlockSpec {
+    /// Four corners [x, z] (mm), counter-clockwise.
+    pub corners: [Point; 4],
+    /// Arc edges (others are straight).
+    #[serde(default)]
+    pub arcs: Vec<ArcSpec>,
+    /// Mesh lines along c0→c1.
+    pub u: LinesSpec,
+    /// Mesh lines along c0→c3.
+    pub v: LinesSpec,
+    /// Material name.
+    pub material: String,
+    /// Edge names.
+    #[serde(default)]
+    pub names: EdgeNames,
+}
+
+/// `[[bodies.supports]]`: zero displacement on a named edge or at a vertex.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SupportSpec {
+    /// Named edge (give `edge` or `point`).
+    pub edge: Option<String>,
+    /// A mesh vertex [x, z], mm.
+    pub point: Option<Point>,
+    /// Components held: any of "x", "z".
+    pub fix: Vec<String>,
+}
+
+/// A coordinate window: exactly one of x or z.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WindowSpec {
+    /// x range, mm.
+    pub x: Option<[f64; 2]>,
+    /// z range, mm.
+    pub z: Option<[f64; 2]>,
+}
+
+/// `[[bodies.tractions]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TractionSpec {
+    /// Named edge.
+    pub edge: String,
+    /// Normal pressure, MPa (positive pushes into the body); two values vary linearly over the window.
+    #[serde(default = "zero")]
+    pub normal: OneOrTwo,
+    /// Shear along the counter-clockwise boundary tangent, MPa.
+    #[serde(default = "zero")]
+    pub shear: OneOrTwo,
+    /// Optional window.
+    pub window: Option<WindowSpec>,
+}
+
+fn zero() -> OneOrTwo {
+    OneOrTwo::One(0.0)
+}
+
+/// `[[bodies]]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodySpec {
+    /// Body name.
+    pub name: String,
+    /// Blocks.
+    pub blocks: Vec<BlockSpec>,
+    /// Supports.
+    #[serde(default)]
+    pub supports: Vec<SupportSpec>,
+    /// Tractions.
+    #[serde(default)]
+    pub tractions: Vec<TractionSpec>,
+}
+
+/// `[probes.NAME]`: a point where results are reported.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProbeSpec {
+    /// Body name.
+    pub body: String,
+    /// Point [x, z], mm.
+    pub at: Point,
+}
+
+/// The whole problem file. Contact and wear sections are read by later stages.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProblemSpec {
+    /// Short title.
+    #[serde(default)]
+    pub title: String,
+    /// What the problem is and where its numbers come from.
+    #[serde(default)]
+    pub description: String,
+    /// Analysis settings.
+    pub analysis: AnalysisSpec,
+    /// Materials by name.
+    pub materials: BTreeMap<String, MaterialSpec>,
+    /// Bodies.
+    pub bodies: Vec<BodySpec>,
+    /// Probes by name.
+    #[serde(default)]
+    pub probes: BTreeMap<String, ProbeSpec>,
+    /// Contact settings (see [`crate::contact`]).
+    pub contact: Option<crate::contact::ContactSpec>,
+    /// Rigid loading plate (see [`crate::contact`]).
+    pub plate: Option<crate::contact::PlateSpec>,
+    /// Wear settings (see [`crate::wear`]).
+    pub wear: Option<crate::wear::WearSpec>,
+}
