@@ -2,12 +2,11 @@
 //! only reads arguments, loads the problem and writes the results.
 
 use clap::{Parser, Subcommand};
-use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use wearfem::driver::{self, JobError};
 use wearfem::examples::EXAMPLES;
-use wearfem::output::{number, write_csv, write_json};
+use wearfem::output::write_json;
 use wearfem::problem::Problem;
 
 #[derive(Parser)]
@@ -125,23 +124,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
         Command::Contact { problem, out } => {
             let p = load(&problem)?;
             let (summary, contact, solution, info) = driver::contact(&p)?;
-            write_json(&out, "summary.json", &summary)?;
-            let rows: Vec<Vec<Value>> = (0..contact.len())
-                .map(|i| {
-                    vec![
-                        number(contact.points.x[i][0]),
-                        number(contact.points.x[i][1]),
-                        number(solution.pressure[i]),
-                        number(solution.gap[i]),
-                    ]
-                })
-                .collect();
-            write_csv(
-                &out,
-                "contact.csv",
-                &["x_mm", "z_mm", "pressure_MPa", "gap_mm"],
-                &rows,
-            )?;
+            wearfem::output::write_contact(&out, &summary, &contact, &solution)?;
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
             println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
             if info.status == wearfem::complementarity::Status::Failed {

@@ -318,3 +318,45 @@ pub fn write_steady(
     }
     .write(dir, "steady.csv", "Steady state")
 }
+
+/// Write one contact solve: summary.json, contact.csv (x, z, pressure, gap) and pressure.svg.
+pub fn write_contact(
+    dir: &Path,
+    summary: &Value,
+    contact: &crate::contact::CondensedContact,
+    solution: &crate::complementarity::ContactSolution,
+) -> Result<(), OutputError> {
+    use crate::plot::{line_plot, Series};
+    write_json(dir, "summary.json", summary)?;
+    let x = &contact.points.x;
+    let rows: Vec<Vec<Value>> = (0..x.len())
+        .map(|i| {
+            vec![
+                number(x[i][0]),
+                number(x[i][1]),
+                number(solution.pressure[i]),
+                number(solution.gap[i]),
+            ]
+        })
+        .collect();
+    write_csv(
+        dir,
+        "contact.csv",
+        &["x_mm", "z_mm", "pressure_MPa", "gap_mm"],
+        &rows,
+    )?;
+    let points = x
+        .iter()
+        .zip(&solution.pressure)
+        .map(|(x, &p)| (x[0], p))
+        .collect();
+    let path = dir.join("pressure.svg");
+    line_plot(
+        &path,
+        "Contact pressure",
+        "x (mm)",
+        "p (MPa)",
+        &[Series { label: "p", points }],
+    )
+    .map_err(plot_error(&path))
+}
