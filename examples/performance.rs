@@ -1,6 +1,6 @@
 //! Sizes and a phase-by-phase timing of one run of punch-b40, for docs/performance.md:
 //! `cargo run --release --example performance`. (The statistically sound figures come from
-//! `cargo bench --bench pipeline`; this prints what the benchmarks cannot: problem sizes, solves
+//! `cargo bench` (benches/setup.rs, contact.rs, wear.rs); this prints what the benchmarks cannot: problem sizes, solves
 //! and iterations per step.)
 
 use std::time::Instant;
