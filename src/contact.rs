@@ -527,6 +527,9 @@ fn plate_modes(
         ("vertical_rotation", None) => {
             return Err(problem.error("plate.pin", "rotation needs a pin [x, z]"))
         }
+        (_, Some(p)) if !p.iter().all(|c| c.is_finite()) => {
+            return Err(problem.error("plate.pin", "must be finite coordinates [x, z] (mm)"))
+        }
         (_, Some(p)) => p,
         (_, None) => {
             // Without a pin, moments are reported about the plate edge's centroid.

@@ -206,6 +206,21 @@ pub fn wear(
     let mut integrator =
         WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
     integrator.first_direction = direction(problem)?;
+    let plate_moves = problem
+        .spec
+        .plate
+        .as_ref()
+        .is_some_and(|p| p.motion != "fixed");
+    if spec.shape_zero_at.is_some() && !plate_moves {
+        // The shift is a vertical rigid translation of the punch, which only leaves the
+        // pressures unchanged if the plate can take it up through λ_F.
+        return Err(problem
+            .error(
+                "wear.shape_zero_at",
+                "shifting the shape needs a plate that moves vertically (plate.motion = \"vertical\" or \"vertical_rotation\"); remove the key or free the plate",
+            )
+            .into());
+    }
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
     let mut solver = ContactSolver::new(&contact, method(problem)?);
@@ -286,7 +301,11 @@ pub fn steady(
     let state = crate::steady::steady_state(
         &contact,
         &integrator.half_period_wear(),
-        integrator.is_monotonic(),
+        if integrator.is_monotonic() {
+            crate::steady::SteadySliding::Monotonic(direction(problem)?)
+        } else {
+            crate::steady::SteadySliding::Reciprocating
+        },
         Default::default(),
     )
     .map_err(|e| {

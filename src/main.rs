@@ -128,7 +128,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
             println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
             if info.status == wearfem::complementarity::Status::Failed {
-                return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}); the last iterate was written", info.complementarity)));
+                return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}); the last iterate was written. A solution may not exist: with a plate that rotates about a pin, friction moves the pressure resultant by μ·l_z, and if that leaves the contact the plate tips", info.complementarity, info.equilibrium)));
             }
         }
         Command::Run {
@@ -148,19 +148,20 @@ fn run(cli: Cli) -> Result<(), Failure> {
             })?;
             wearfem::output::write_wear(&out, &p, &result)?;
             let h = &result.history;
-            let last_plus = h.steps.iter().rev().find(|s| s.direction == "+");
-            let probe_text: Vec<String> = result
-                .probes
-                .iter()
-                .enumerate()
-                .map(|(k, (n, _))| {
-                    format!(
-                        "p({n}) = {:.4} MPa",
-                        last_plus.map_or(f64::NAN, |s| s.probes[k])
-                    )
-                })
-                .collect();
-            println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '+' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
+            // Report the last half cycle in the first step's direction ('+' unless a monotonic
+            // or reversed run starts with '-'), so the figure always exists.
+            let first = h.steps.first().map_or("+", |s| s.direction);
+            let last_first = h.steps.iter().rev().find(|s| s.direction == first);
+            let probe_text: Vec<String> = match last_first {
+                Some(step) => result
+                    .probes
+                    .iter()
+                    .zip(&step.probes)
+                    .map(|((n, _), value)| format!("p({n}) = {value:.4} MPa"))
+                    .collect(),
+                None => vec!["no steps".to_string()],
+            };
+            println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '{first}' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
             if h.failed_solves > 0 || h.unconverged_steps > 0 {
                 return Err(Failure::Compute(format!("{} contact solves failed and {} steps missed the implicit criterion (wear.criterion); results kept in {}", h.failed_solves, h.unconverged_steps, out.display())));
             }
@@ -182,7 +183,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 out.display()
             );
             if state.status != wearfem::steady::SteadyStatus::Solved {
-                return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); the last iterate was written", state.status, state.wear_residual)));
+                return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); the last iterate was written. If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }
         }
         Command::Examples { action, name } => match (action.as_deref(), name) {

@@ -299,6 +299,10 @@ pub fn write_steady(
     let summary = json!({
         "title": problem.spec.title,
         "status": format!("{:?}", state.status),
+        "sliding": match state.sliding {
+            crate::steady::SteadySliding::Reciprocating => "reciprocating".to_string(),
+            crate::steady::SteadySliding::Monotonic(d) => format!("monotonic {}", d.symbol()),
+        },
         "iterations": state.iterations,
         "wear_residual": number(state.wear_residual),
         "x": numbers(&x),

@@ -165,6 +165,12 @@ impl Problem {
                     format!("no body named \"{}\"", probe.body),
                 )
             })?;
+            if !probe.at.iter().all(|c| c.is_finite()) {
+                return Err(problem.error(
+                    format!("probes.{name}.at"),
+                    format!("must be finite coordinates [x, z] (mm), got {:?}", probe.at),
+                ));
+            }
         }
         Ok(problem)
     }

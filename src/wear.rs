@@ -256,14 +256,15 @@ impl WearIntegrator {
             return bad("extrapolation", "needs entries with k ≥ 1".into());
         }
         let bounds: Vec<usize> = schedule.iter().filter_map(|e| e.until).collect();
-        if bounds.windows(2).any(|w| w[1] <= w[0])
+        if bounds.first() == Some(&0)
+            || bounds.windows(2).any(|w| w[1] <= w[0])
             || schedule[..schedule.len() - 1]
                 .iter()
                 .any(|e| e.until.is_none())
         {
             return bad(
                 "extrapolation",
-                "`until` must rise from entry to entry; only the last entry may omit it".into(),
+                "`until` (the last step of an entry) must be at least 1 and rise from entry to entry; only the last entry may omit it".into(),
             );
         }
         if spec.shape_zero_at.is_some_and(|x| !x.is_finite()) {
@@ -376,6 +377,8 @@ impl WearIntegrator {
                 // Plain explicit stepping: m sub-steps per half period, pressure from the
                 // current shape at the start of each sub-step.
                 let m = self.spec.substeps;
+                // Sum of the applied sub-step increments: what this step really wore.
+                new_increment.iter_mut().for_each(|w| *w = 0.0);
                 for sub in 0..m {
                     let info = solver.solve_into(&shape, direction, &mut sol);
                     track(info, &mut hist);
@@ -401,12 +404,16 @@ impl WearIntegrator {
                     self.wear_increment(&sol.pressure, &part, k as f64, &mut increment);
                     for i in 0..n {
                         shape[i] += increment[i];
+                        new_increment[i] += increment[i];
                     }
                 }
                 let info = solver.solve_into(&shape, direction, &mut sol);
                 track(info, &mut hist);
                 iterations = m;
-                self.wear_increment(&sol.pressure, &sliding, 1.0, &mut increment);
+                // Report one half period's wear, not k of them (as the half-period scheme does).
+                for i in 0..n {
+                    increment[i] = new_increment[i] / k as f64;
+                }
             } else {
                 let info = solver.solve_into(&shape, direction, &mut sol);
                 track(info, &mut hist);
@@ -463,8 +470,13 @@ impl WearIntegrator {
             if first_half && !monotonic {
                 cycle_wear.copy_from_slice(&increment);
             } else {
-                for i in 0..n {
-                    cycle_wear[i] += increment[i];
+                if monotonic {
+                    // Under monotonic sliding a step is the whole cycle: δw is that step's wear.
+                    cycle_wear.copy_from_slice(&increment);
+                } else {
+                    for i in 0..n {
+                        cycle_wear[i] += increment[i];
+                    }
                 }
                 let min = cycle_wear.iter().cloned().fold(f64::INFINITY, f64::min);
                 delta_w = cycle_wear.iter().map(|w| w - min).fold(0.0, f64::max);

@@ -159,6 +159,19 @@ fn broken_contact_plate_and_wear_sections() {
             "target_edge = \"top\"",
             "contact.target_edge",
         ),
+        // Shifting the shape is a vertical rigid motion: it needs a plate free to take it up.
+        (
+            "motion = \"vertical_rotation\"",
+            "motion = \"fixed\"",
+            "wear.shape_zero_at",
+        ),
+        ("pin = [1100.0, 140.0] ", "pin = [nan, 140.0] ", "plate.pin"),
+        (
+            "tolerance = 0.01 ",
+            "tolerance = 0.01 \nextrapolation = [{ k = 1, until = 0 }, { k = 5 }]\n",
+            "wear.extrapolation",
+        ),
+        ("at = [1070.0, 100.0]", "at = [1070.0, inf]", "probes.M.at"),
     ];
     for (k, (from, to, key)) in cases.iter().enumerate() {
         assert!(base.contains(from), "baseline lacks '{from}'");

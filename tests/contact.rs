@@ -295,3 +295,27 @@ fn loads_on_body_1_outside_the_plate_enter_the_plate_equilibrium() {
         "centre {centre}, expected {expected}"
     );
 }
+
+#[test]
+fn no_solution_is_reported_as_failed_not_solved() {
+    // A plate on a pin 40 mm above the contact: the friction moment μ F l_z moves the pressure
+    // resultant by μ l_z from the load line (x = 1100), and the punch is 30 mm either side. At
+    // μ = 0.7 (28 mm) the punch still balances on its edge region; at μ = 0.8 (32 mm) no
+    // contact pressure ≥ 0 can balance the moment, so any "solution" would be wrong and the
+    // solver must say that it failed (whichever method ends, Lemke included).
+    for (mu, exists) in [(0.7, true), (0.8, false)] {
+        let contact = CondensedContact::build(&with_friction("punch-b40", mu))
+            .unwrap()
+            .0;
+        for method in [Method::ActiveSet, Method::Lemke] {
+            let (sol, info) = ContactSolver::new(&contact, method)
+                .solve(&contact.points.initial_gap, Direction::Plus);
+            let solved = info.status == Status::Solved;
+            assert_eq!(solved, exists, "μ = {mu}, {method:?}: {info:?}");
+            if solved {
+                assert!(info.complementarity < 1e-10 && info.equilibrium < 1e-10);
+            }
+            assert!(sol.pressure.iter().all(|p| p.is_finite()));
+        }
+    }
+}

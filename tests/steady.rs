@@ -174,3 +174,120 @@ fn summed_pressure_theory_is_eq_19_and_matches_the_steady_state() {
         );
     }
 }
+
+#[test]
+fn monotonic_steady_state_follows_the_sliding_direction() {
+    // Sliding the other way mirrors the friction moment about the pin: the linear optimum of
+    // the previous test with the opposite slope.
+    let edits = [
+        (
+            "sliding = \"reciprocating\"",
+            "sliding = \"monotonic\"\nspeed = 15.0\nstep_time = 0.2",
+        ),
+        ("friction = 0.25", "friction = 0.25\ndirection = \"-\""),
+    ];
+    let (state, contact, _) = driver::steady(&problem("punch-b20", &edits)).unwrap();
+    assert_eq!(state.status, SteadyStatus::Solved);
+    for (x, p) in contact.points.x.iter().zip(&state.p_plus) {
+        let expected = 16.666 * (1.0 - 12.0 * (-0.25 * 20.0) * (x[0] - 1100.0) / 3600.0);
+        assert!(
+            (p - expected).abs() < 1e-9 * 16.666,
+            "x = {}: {p} vs {expected}",
+            x[0]
+        );
+    }
+}
+
+#[test]
+fn steady_state_for_b_below_one_meets_eq_23() {
+    // b = 0.5: the wear law has an infinite slope at p = 0, where plain Newton cycles. Eq. 23:
+    // (p⁺)ᵇ + (p⁻)ᵇ uniform, and the edge (one half cycle unloaded) at 2^(1/b) = 4 times the
+    // pressure where p⁺ = p⁻. The solve is exact up to round-off: 1e-9.
+    let b = 0.5;
+    let p = problem(
+        "punch-b40-b0.8",
+        &[("a = 1.0, b = 0.8 }", "a = 1.0, b = 0.5 }")],
+    );
+    let (state, _, _) = driver::steady(&p).unwrap();
+    assert_eq!(state.status, SteadyStatus::Solved);
+    let sums: Vec<f64> = state
+        .p_plus
+        .iter()
+        .zip(&state.p_minus)
+        .map(|(a, c)| a.powf(b) + c.powf(b))
+        .collect();
+    for s in &sums {
+        assert!(
+            (s - sums[0]).abs() < 1e-9 * sums[0],
+            "eq. 23b: {s} vs {}",
+            sums[0]
+        );
+    }
+    let equal = (sums[0] / 2.0).powf(1.0 / b);
+    let edge = state.p_plus[0].max(state.p_minus[0]);
+    assert!(
+        (edge - 4.0 * equal).abs() < 1e-9 * edge,
+        "eq. 23c: {edge} vs 4 × {equal}"
+    );
+}
+
+#[test]
+fn steady_state_with_lift_off_is_the_triangle_of_eq_19() {
+    // Load variant 3 without its second window: 25 MPa on x ∈ [1070, 1100], F0 = 7.5 kN at
+    // x = 1085 mm, outside the middle third. The linear p⁺ + p⁻ of eq. 19 would turn negative,
+    // so the punch lifts off for good from part of its face, which stops wearing while the
+    // rigid wear leaves it apart. Equilibrium of a triangle with its resultant 2F0 at 15 mm
+    // from the edge: base 45 mm, peak 4F0/(45 t) = 66.67 MPa at x = 1070, zero from x = 1115
+    // (a mesh line, so the Lobatto weights integrate it exactly: round-off tolerance).
+    // Friction is lowered to μ = 0.05 so that the two half cycles share their contact zone;
+    // with μ = 0.25 the friction moment μ l_z = 10 mm separates them, and no state of this form
+    // exists (the transient ends rocking on two facets, see docs/validation.md).
+    let p = problem(
+        "punch-b40-variant3",
+        &[
+            ("normal = 12.5", "normal = 0.0"),
+            ("friction = 0.25", "friction = 0.05"),
+        ],
+    );
+    let (state, contact, _) = driver::steady(&p).unwrap();
+    assert_eq!(state.status, SteadyStatus::Solved);
+    assert!(
+        state.wear_residual < 1e-9,
+        "wear residual {}",
+        state.wear_residual
+    );
+    let peak = 4.0 * 7500.0 / (45.0 * 10.0);
+    let mut lifted = 0;
+    for (i, x) in contact.points.x.iter().enumerate() {
+        let triangle = (peak * (1115.0 - x[0]) / 45.0).max(0.0);
+        lifted += usize::from(x[0] > 1115.0);
+        let sum = state.p_plus[i] + state.p_minus[i];
+        assert!(
+            (sum - triangle).abs() < 1e-8 * peak,
+            "x = {}: {sum} vs {triangle}",
+            x[0]
+        );
+    }
+    assert!(
+        lifted > 10,
+        "the test must exercise points out of contact throughout"
+    );
+    // The shape it reports, given to the ordinary contact solver, gives back both pressures.
+    let gap: Vec<f64> = contact
+        .points
+        .initial_gap
+        .iter()
+        .zip(&state.shape)
+        .map(|(a, b)| a + b)
+        .collect();
+    let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
+    for (dir, expected) in [
+        (Direction::Plus, &state.p_plus),
+        (Direction::Minus, &state.p_minus),
+    ] {
+        let (sol, _) = solver.solve(&gap, dir);
+        for (a, b) in sol.pressure.iter().zip(expected.iter()) {
+            assert!((a - b).abs() < 1e-8 * peak, "{dir:?}: {a} vs {b}");
+        }
+    }
+}
