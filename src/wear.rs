@@ -330,6 +330,7 @@ impl WearIntegrator {
         let mut increment = vec![0.0; n];
         let mut new_increment = vec![0.0; n];
         let mut cycle_wear = vec![0.0; n];
+        let mut residual = vec![0.0; n];
         let mut sol = ContactSolution::default();
         let mut hist = WearHistory {
             steps: Vec::with_capacity(self.spec.steps),
@@ -419,7 +420,12 @@ impl WearIntegrator {
                 track(info, &mut hist);
                 self.wear_increment(&sol.pressure, &sliding, k as f64, &mut increment);
                 let mut converged = false;
-                for _ in 0..self.spec.max_iterations {
+                // The fixed-point iteration is a contraction only while k·∂W/∂p times the
+                // contact compliance stays below one, which large k or b > 1 break. Aitken's
+                // dynamic relaxation (Irons–Tuck) picks the step from the last two residuals
+                // r = W(p(g + Δw)) − Δw; the first step is the plain one.
+                let mut relaxation = 1.0;
+                for iteration in 0..self.spec.max_iterations {
                     iterations += 1;
                     for i in 0..n {
                         trial[i] = shape[i] + increment[i];
@@ -439,10 +445,25 @@ impl WearIntegrator {
                         let after = integral(&shape) + integral(&new_increment);
                         100.0 * (after - before).abs() / before.abs().max(f64::MIN_POSITIVE)
                     };
-                    std::mem::swap(&mut increment, &mut new_increment);
                     if criterion <= self.spec.tolerance {
+                        std::mem::swap(&mut increment, &mut new_increment);
                         converged = true;
                         break;
+                    }
+                    let (mut dot, mut norm) = (0.0, 0.0);
+                    for i in 0..n {
+                        let r = new_increment[i] - increment[i];
+                        let dr = r - residual[i];
+                        dot += residual[i] * dr;
+                        norm += dr * dr;
+                        residual[i] = r;
+                    }
+                    if iteration > 0 && norm > 0.0 {
+                        // Bounded so that a noisy estimate can neither stall nor overshoot.
+                        relaxation = (-relaxation * dot / norm).clamp(1e-3, 2.0);
+                    }
+                    for i in 0..n {
+                        increment[i] += relaxation * residual[i];
                     }
                 }
                 if !converged {
