@@ -263,4 +263,97 @@ fn main() {
             100.0 * diff
         );
     }
+    beyond_the_paper();
+}
+
+/// Power laws far from b = 1, a contact that lifts off for good, and one with no steady state.
+fn beyond_the_paper() {
+    println!("\n## Beyond the paper\n");
+    println!("| case | solver | iterations / steps | check | value | theory |\n|---|---|---|---|---|---|");
+    for b in [0.5f64, 2.0] {
+        let bb = format!("a = 1.0, b = {b:.1} }}");
+        let p = problem("punch-b40-b0.8", &[("a = 1.0, b = 0.8 }", &bb)]);
+        let (state, _, _) = driver::steady(&p).unwrap();
+        let sums: Vec<f64> = (0..state.p_plus.len())
+            .map(|i| state.p_plus[i].powf(b) + state.p_minus[i].powf(b))
+            .collect();
+        let spread = sums.iter().cloned().fold(f64::MIN, f64::max)
+            - sums.iter().cloned().fold(f64::MAX, f64::min);
+        let equal = (sums[0] / 2.0).powf(1.0 / b);
+        let edge = state.p_plus[0].max(state.p_minus[0]);
+        println!(
+            "| b = {b}, punch-b40-b0.8 load | steady ({:?}) | {} | edge / p(p⁺ = p⁻); spread of (p⁺)ᵇ + (p⁻)ᵇ | {:.12}; {spread:.1e} | 2^(1/b) = {:.12}; 0 |",
+            state.status,
+            state.iterations,
+            edge / equal,
+            2f64.powf(1.0 / b)
+        );
+    }
+    let quadratic = [
+        ("a = 1.0, b = 0.8 }", "a = 1.0, b = 2.0 }"),
+        ("tolerance = 0.01 ", "criterion = \"pointwise\"\ntolerance = 0.01 "),
+    ];
+    let p = problem("punch-b40-b0.8", &quadratic);
+    let (state, _, _) = driver::steady(&p).unwrap();
+    let run = driver::wear(&p, None, |_| {}).unwrap();
+    let h = &run.history;
+    let iterations: usize = h.steps.iter().map(|s| s.iterations).sum();
+    println!(
+        "| b = 2, time integration (pointwise criterion, Aitken relaxation) | run | {} steps, {:.1} iterations per step, {} steps at the iteration limit | p⁺(M) | {:.4} | steady {:.4} |",
+        h.steps.len(),
+        iterations as f64 / h.steps.len() as f64,
+        h.unconverged_steps,
+        h.p_plus[0],
+        state.p_plus[0]
+    );
+    // Lift-off: variant 3 without its second window, μ = 0.05; triangle 66.67 MPa → 0 at 1115.
+    let lift = [
+        ("normal = 12.5", "normal = 0.0"),
+        ("friction = 0.25", "friction = 0.05"),
+    ];
+    let p = problem("punch-b40-variant3", &lift);
+    let (state, contact, _) = driver::steady(&p).unwrap();
+    let worst = (0..state.p_plus.len())
+        .map(|i| {
+            let triangle = (66.0f64 + 2.0 / 3.0) * ((1115.0 - contact.points.x[i][0]) / 45.0);
+            (state.p_plus[i] + state.p_minus[i] - triangle.max(0.0)).abs()
+        })
+        .fold(0.0, f64::max);
+    let run = driver::wear(&p, Some(5000), |_| {}).unwrap();
+    let worst_run = (0..state.p_plus.len())
+        .filter(|&i| contact.points.x[i][0] > 1071.0)
+        .map(|i| {
+            let triangle = (66.0f64 + 2.0 / 3.0) * ((1115.0 - contact.points.x[i][0]) / 45.0);
+            (run.history.p_plus[i] + run.history.p_minus[i] - triangle.max(0.0)).abs()
+        })
+        .fold(0.0, f64::max);
+    println!(
+        "| lift-off: variant 3 load 25 MPa on [1070, 1100] only, μ = 0.05 | steady ({:?}) | {} | max abs(p⁺ + p⁻ − triangle), MPa | {worst:.1e} | 0 (triangle 66.67 → 0 at x = 1115) |",
+        state.status, state.iterations
+    );
+    println!(
+        "| same | run | 5000 steps | same, away from the corner point, MPa | {worst_run:.3} | 0 |"
+    );
+    let rocking = [("normal = 12.5", "normal = 0.0")];
+    let p = problem("punch-b40-variant3", &rocking);
+    let (state, _, _) = driver::steady(&p).unwrap();
+    let run = driver::wear(&p, Some(5000), |_| {}).unwrap();
+    let h = &run.history;
+    let plus_end = h.p_plus.iter().rposition(|&v| v > 0.0).unwrap_or(0);
+    let minus_start = h.p_minus.iter().position(|&v| v > 0.0).unwrap_or(0);
+    println!(
+        "| same with μ = 0.25 (μ l_z = 10 mm) | steady ({:?}) | {} | — | no state with one rigid wear per period | — |",
+        state.status, state.iterations
+    );
+    println!(
+        "| same | run | 5000 steps | contact zones '+' / '−' (x, mm) | {:.2}–{:.2} / {:.2}–{:.2} | rocks on two facets |",
+        contact_x(&p, 0),
+        contact_x(&p, plus_end),
+        contact_x(&p, minus_start),
+        contact_x(&p, h.p_minus.iter().rposition(|&v| v > 0.0).unwrap_or(0)),
+    );
+}
+
+fn contact_x(p: &Problem, i: usize) -> f64 {
+    CondensedContact::build(p).unwrap().0.points.x[i][0]
 }
