@@ -291,7 +291,10 @@ fn beyond_the_paper() {
     }
     let quadratic = [
         ("a = 1.0, b = 0.8 }", "a = 1.0, b = 2.0 }"),
-        ("tolerance = 0.01 ", "criterion = \"pointwise\"\ntolerance = 0.01 "),
+        (
+            "tolerance = 0.01 ",
+            "criterion = \"pointwise\"\ntolerance = 0.01 ",
+        ),
     ];
     let p = problem("punch-b40-b0.8", &quadratic);
     let (state, _, _) = driver::steady(&p).unwrap();
