@@ -92,27 +92,31 @@ pub struct SteadyState {
     pub rigid_wear: Vec<f64>,
     /// Status.
     pub status: SteadyStatus,
-    /// Newton iterations, summed over continuation stages.
+    /// Newton iterations.
     pub iterations: usize,
     /// Largest relative residual of the wear compatibility at the end (at points out of
     /// contact throughout: how far the rigid wear would close their gap).
     pub wear_residual: f64,
 }
 
-/// Wear of one half period at pressure p: Σ c pᵇ, and its slope for Newton's method: the
-/// tangent, or with `secant` the secant W(p)/p for the concave terms (b < 1). Near p = 0 the
-/// tangent of a concave term overshoots to negative pressure (p − W/W' = p(1 − 1/b) < 0 when
-/// the target is zero) while the secant step p·W*/W(p) stays positive.
-fn wear(terms: &[(f64, f64)], p: f64, secant: bool) -> (f64, f64) {
+/// Wear of one half period at pressure p: Σ c pᵇ, and the slope Newton's method uses.
+///
+/// For b ≥ 1 the slope is the tangent. For a concave term (b < 1) it is the secant W(p)/p:
+/// near p = 0 the tangent overshoots to negative pressure (p − W/W' = p(1 − 1/b) < 0 when the
+/// target is zero) and the active sets cycle, while the secant step p·W*/W(p) stays positive.
+/// The price is linear convergence at rate about 1 − b. At p = 0 the tangent is 0 (b > 1) or
+/// infinite (b < 1); the secant to the reference pressure `p_ref` (MPa) is used instead, so
+/// that a point just brought into contact keeps a wear row that depends on its own pressure
+/// (with a zero slope several such rows would leave the system singular).
+fn wear(terms: &[(f64, f64)], p: f64, p_ref: f64) -> (f64, f64) {
     let p = p.max(0.0);
     terms.iter().fold((0.0, 0.0), |(w, dw), &(c, b)| {
         let slope = if b == 1.0 {
             c
         } else if p > 0.0 {
-            let factor = if secant && b < 1.0 { 1.0 } else { b };
-            c * factor * p.powf(b - 1.0)
+            c * b.max(1.0) * p.powf(b - 1.0)
         } else {
-            0.0
+            c * p_ref.powf(b - 1.0)
         };
         (w + c * p.powf(b), dw + slope)
     })
@@ -129,6 +133,8 @@ struct System<'a> {
     equilibrium: Vec<Vec<f64>>,
     rigid: Vec<f64>,
     load: &'a [f64],
+    /// Mean contact pressure F/A (MPa): the scale of the secant slope at p = 0.
+    reference_pressure: f64,
 }
 
 impl System<'_> {
@@ -188,8 +194,6 @@ impl System<'_> {
         let mut lu = DenseLu::default();
         let mut scratch = vec![0.0; size];
         let mut rhs = vec![0.0; size];
-        let mut flips = vec![vec![0usize; n]; halves];
-        let mut previous = active.to_vec();
         for iteration in 1..=settings.max_iterations {
             let mat = lu.storage(size);
             let mut row = 0;
@@ -231,8 +235,11 @@ impl System<'_> {
                 } else {
                     let mut f = self.rigid_wear_gap(z, i);
                     for h in 0..halves {
-                        let (w, dw) =
-                            wear(terms, z[self.force(h, i)] / self.area[i], flips[h][i] >= 2);
+                        let (w, dw) = wear(
+                            terms,
+                            z[self.force(h, i)] / self.area[i],
+                            self.reference_pressure,
+                        );
                         f += w;
                         wear_scale = wear_scale.max(w);
                         out[self.force(h, i)] = dw / self.area[i];
@@ -260,18 +267,15 @@ impl System<'_> {
                 return (SteadyStatus::Singular, iteration);
             }
             lu.solve_in_place(&mut rhs, &mut scratch);
+            // A pivot can be finite and still small enough for the solve to overflow: keep the
+            // last finite iterate then.
+            if rhs.iter().zip(z.iter()).any(|(d, v)| !(v + d).is_finite()) {
+                return (SteadyStatus::Singular, iteration);
+            }
             for (zi, d) in z.iter_mut().zip(&rhs) {
                 *zi += d;
             }
-            previous.clone_from_slice(active);
             let changed = self.update_active_sets(z, active, wear_scale);
-            // A point that keeps switching sits where its pressure tends to zero; from then on
-            // it gets the secant slope, which cannot overshoot (see `wear`).
-            for h in 0..halves {
-                for i in 0..n {
-                    flips[h][i] += usize::from(previous[h][i] != active[h][i]);
-                }
-            }
             let step = (0..halves)
                 .flat_map(|h| (0..n).map(move |i| (h, i)))
                 .map(|(h, i)| rhs[self.force(h, i)].abs())
@@ -330,10 +334,10 @@ impl System<'_> {
 /// Compute the steady worn state of `contact` for half-period wear `terms` (from
 /// [`crate::wear::WearIntegrator::half_period_wear`]) under `sliding`.
 ///
-/// For b < 1 the wear law pᵇ has an infinite slope at p = 0, and at points whose pressure
-/// tends to zero Newton's step overshoots and the active sets cycle; such points switch to a
-/// secant slope after their second switch (see `wear`), which ends the cycle at the price of
-/// linear convergence there (b = 0.5: 34 iterations instead of 6–10).
+/// For b < 1 the wear law pᵇ has an infinite slope at p = 0 and the iteration uses secant
+/// slopes (see `wear`): b = 0.5 takes about 40 iterations instead of 6–10. Far from b = 1 the
+/// full step from a uniform pressure can also wander between active sets; if it does not
+/// converge, the solve is repeated by continuation in the exponents from b = 1.
 pub fn steady_state(
     contact: &CondensedContact,
     terms: &[(f64, f64)],
@@ -351,11 +355,14 @@ pub fn steady_state(
         SteadySliding::Reciprocating => vec![1.0, -1.0],
         SteadySliding::Monotonic(direction) => vec![direction.sign()],
     };
+    let area = contact.areas();
+    let total_area: f64 = area.iter().sum();
+    let mean = contact.plate_load.first().copied().unwrap_or(0.0).abs() / total_area;
     let system = System {
         n,
         m,
         halves: signs.len(),
-        area: contact.areas(),
+        area,
         gap: signs.iter().map(|&s| contact.gap_matrix(s)).collect(),
         equilibrium: signs
             .iter()
@@ -363,19 +370,66 @@ pub fn steady_state(
             .collect(),
         rigid: contact.rigid_gap_matrix(),
         load: &contact.plate_load,
+        reference_pressure: if mean > 0.0 && mean.is_finite() {
+            mean
+        } else {
+            1.0
+        },
     };
     // Start from uniform pressure F/A in both halves (the monotonic optimum of a flat punch).
     let mut z = vec![0.0; system.size()];
-    let total_area: f64 = system.area.iter().sum();
-    let mean = system.load.first().copied().unwrap_or(0.0).abs() / total_area;
     for h in 0..system.halves {
         for i in 0..n {
             z[system.force(h, i)] = mean * system.area[i];
         }
     }
     let mut active = vec![vec![true; n]; system.halves];
-    let (status, iterations) = system.newton(terms, &mut z, &mut active, settings);
+    let start = (z.clone(), active.clone());
+    let (mut status, mut iterations) = system.newton(terms, &mut z, &mut active, settings);
+    if status != SteadyStatus::Solved && terms.iter().any(|t| t.1 != 1.0) {
+        // Far from b = 1 the full Newton step from a uniform pressure can wander between
+        // active sets; walk there from the linear problem instead.
+        (z, active) = start;
+        let (retry, used) = continuation(&system, terms, &mut z, &mut active, settings);
+        (status, iterations) = (retry, iterations + used);
+    }
     Ok(system.state(sliding, terms, &z, status, iterations))
+}
+
+/// Newton solves for the exponents 1 + t (b − 1), t from 0 to 1, each stage starting from
+/// the last converged one; a failed stage is retried with half the step, down to 1/64.
+fn continuation(
+    system: &System,
+    terms: &[(f64, f64)],
+    z: &mut Vec<f64>,
+    active: &mut Vec<Vec<bool>>,
+    settings: SteadySettings,
+) -> (SteadyStatus, usize) {
+    let stage = |t: f64| -> Vec<(f64, f64)> {
+        terms
+            .iter()
+            .map(|&(c, b)| (c, 1.0 + t * (b - 1.0)))
+            .collect()
+    };
+    let (mut status, mut iterations) = system.newton(&stage(0.0), z, active, settings);
+    let (mut t, mut step) = (0.0f64, 0.25f64);
+    while status == SteadyStatus::Solved && t < 1.0 {
+        let target = (t + step).min(1.0);
+        let (mut trial_z, mut trial_active) = (z.clone(), active.clone());
+        let (stage_status, used) =
+            system.newton(&stage(target), &mut trial_z, &mut trial_active, settings);
+        iterations += used;
+        eprintln!("DEBUG t {t} target {target} {stage_status:?} {used}");
+        if stage_status == SteadyStatus::Solved {
+            (*z, *active, t) = (trial_z, trial_active, target);
+        } else if step > 1.0 / 64.0 {
+            step *= 0.5;
+        } else {
+            // The last converged stage is kept; the requested exponents were not reached.
+            status = stage_status;
+        }
+    }
+    (status, iterations)
 }
 
 impl System<'_> {
@@ -399,9 +453,9 @@ impl System<'_> {
         let mut wear_residual = 0.0f64;
         let mut wear_scale = 0.0f64;
         for i in 0..n {
-            let mut w = wear(terms, p_plus[i], false).0;
+            let mut w = wear(terms, p_plus[i], 1.0).0;
             if halves == 2 {
-                w += wear(terms, p_minus[i], false).0;
+                w += wear(terms, p_minus[i], 1.0).0;
             }
             wear_scale = wear_scale.max(w);
             let closing = w + self.rigid_wear_gap(z, i);
@@ -411,7 +465,10 @@ impl System<'_> {
             } else {
                 (-closing).max(0.0)
             };
-            wear_residual = wear_residual.max(violation);
+            // NaN must survive (f64::max would drop it) so that a broken state never looks clean.
+            if violation.is_nan() || violation > wear_residual {
+                wear_residual = violation;
+            }
         }
         let lambdas = |h: usize| (0..m).map(|k| z[self.lambda(h, k)]).collect::<Vec<f64>>();
         SteadyState {

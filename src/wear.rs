@@ -468,6 +468,9 @@ impl WearIntegrator {
                 }
                 if !converged {
                     hist.unconverged_steps += 1;
+                    // Keep the last evaluated wear, not the relaxed iterate: that one was never
+                    // checked and, with a relaxation factor above one, could even be negative.
+                    std::mem::swap(&mut increment, &mut new_increment);
                 }
                 for i in 0..n {
                     shape[i] += increment[i];

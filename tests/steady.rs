@@ -291,3 +291,69 @@ fn steady_state_with_lift_off_is_the_triangle_of_eq_19() {
         }
     }
 }
+
+#[test]
+fn steady_state_with_lift_off_for_power_laws() {
+    // The lift-off load of the previous test with b = 0.5 and b = 3 (μ = 0.05 and 0.1): no
+    // closed form for the pressures, but the theory fixes their structure. The wear of a period,
+    // Σ_h W(p_h) ∝ (p⁺)ᵇ + (p⁻)ᵇ, must be a rigid-body motion of the pinned plate, i.e. linear in
+    // x, wherever the punch touches in either half cycle; it is zero where it never touches;
+    // and the shape, given to the ordinary contact solver, gives back both pressures.
+    // These cases made the Newton matrix singular (zero wear slope at p = 0) or cycled.
+    for (b, mu) in [(0.5, "0.05"), (3.0, "0.1")] {
+        let law = format!("a = 1.0, b = {b:.1} }}");
+        let friction = format!("friction = {mu}");
+        let p = problem(
+            "punch-b40-variant3",
+            &[
+                ("normal = 12.5", "normal = 0.0"),
+                ("friction = 0.25", &friction),
+                ("a = 1.0, b = 1.0 }", &law),
+            ],
+        );
+        let (state, contact, _) = driver::steady(&p).unwrap();
+        assert_eq!(state.status, SteadyStatus::Solved, "b = {b}");
+        let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+        let wear: Vec<f64> = (0..x.len())
+            .map(|i| state.p_plus[i].powf(b) + state.p_minus[i].powf(b))
+            .collect();
+        let touching: Vec<usize> = (0..x.len()).filter(|&i| wear[i] > 0.0).collect();
+        assert!(
+            touching.len() > 10 && touching.len() + 3 <= x.len(),
+            "b = {b}: {} of {} points touch",
+            touching.len(),
+            x.len()
+        );
+        // The line through the first and last touching points must hold at all the others
+        // (1e-9 of the largest value: the Newton iteration stops at round-off).
+        let (i0, i1) = (touching[0], touching[touching.len() - 1]);
+        let largest = wear.iter().cloned().fold(0.0, f64::max);
+        for &i in &touching {
+            let line = wear[i0] + (wear[i1] - wear[i0]) * (x[i] - x[i0]) / (x[i1] - x[i0]);
+            assert!(
+                (wear[i] - line).abs() < 1e-9 * largest,
+                "b = {b}, x = {}: {} vs line {line}",
+                x[i],
+                wear[i]
+            );
+        }
+        let gap: Vec<f64> = contact
+            .points
+            .initial_gap
+            .iter()
+            .zip(&state.shape)
+            .map(|(a, g)| a + g)
+            .collect();
+        let peak = state.p_plus.iter().cloned().fold(0.0, f64::max);
+        let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
+        for (dir, expected) in [
+            (Direction::Plus, &state.p_plus),
+            (Direction::Minus, &state.p_minus),
+        ] {
+            let (sol, _) = solver.solve(&gap, dir);
+            for (a, e) in sol.pressure.iter().zip(expected.iter()) {
+                assert!((a - e).abs() < 1e-8 * peak, "b = {b} {dir:?}: {a} vs {e}");
+            }
+        }
+    }
+}
