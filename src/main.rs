@@ -172,7 +172,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds)?;
             let probes: Vec<String> = driver::contact_probes(&p, &contact)
                 .iter()
-                .map(|(n, i)| format!("p⁺({n}) = {:.4} MPa", state.p_plus[*i]))
+                .map(|(n, i)| {
+                    let label = match state.sliding {
+                        wearfem::steady::SteadySliding::Reciprocating => "p⁺",
+                        wearfem::steady::SteadySliding::Monotonic(_) => "p",
+                    };
+                    format!("{label}({n}) = {:.4} MPa", state.p_plus[*i])
+                })
                 .collect();
             println!(
                 "{}: steady state in {} iterations, {:.4} s (set-up included); {} → {}",
