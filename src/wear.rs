@@ -323,15 +323,11 @@ impl WearIntegrator {
     ) -> WearHistory {
         let points = &contact.points;
         let n = points.x.len();
-        let sliding: Vec<f64> = self.laws.iter().map(|l| self.sliding(l.a)).collect();
-        let thickness_area: Vec<f64> = points.weight.clone();
+        let mut ws = Workspace::new(n);
+        ws.weight.copy_from_slice(&points.weight);
+        ws.sliding = self.laws.iter().map(|l| self.sliding(l.a)).collect();
         let mut shape = initial.to_vec();
-        let mut trial = vec![0.0; n];
-        let mut increment = vec![0.0; n];
-        let mut new_increment = vec![0.0; n];
         let mut cycle_wear = vec![0.0; n];
-        let mut residual = vec![0.0; n];
-        let mut sol = ContactSolution::default();
         let mut hist = WearHistory {
             steps: Vec::with_capacity(self.spec.steps),
             snapshots: vec![],
@@ -342,19 +338,12 @@ impl WearIntegrator {
             unconverged_steps: 0,
             failed_solves: 0,
         };
-        let monotonic = self.spec.sliding == "monotonic";
-        let pointwise = self.spec.criterion == "pointwise";
+        let monotonic = self.is_monotonic();
         let zero_at = self
             .spec
             .shape_zero_at
             .map(|x0| interpolation_weights(points, x0));
         let mut half_periods = 0;
-        let integral = |g: &[f64]| {
-            g.iter()
-                .zip(&thickness_area)
-                .map(|(a, w)| a * w)
-                .sum::<f64>()
-        };
         for step in 1..=self.spec.steps {
             // Odd steps slide in the first direction (contact.direction), even ones back.
             let first_half = monotonic || step % 2 == 1;
@@ -365,158 +354,41 @@ impl WearIntegrator {
             };
             let k = factor(&self.schedule, step);
             half_periods += k;
-            let mut solves = 0;
-            let mut iterations = 0;
-            let mut criterion = 0.0;
-            let mut track = |info: SolveInfo, hist: &mut WearHistory| {
-                solves += 1;
-                if info.status == Status::Failed {
-                    hist.failed_solves += 1;
-                }
-            };
-            if self.spec.substeps > 0 {
-                // Plain explicit stepping: m sub-steps per half period, pressure from the
-                // current shape at the start of each sub-step.
-                let m = self.spec.substeps;
-                // Sum of the applied sub-step increments: what this step really wore.
-                new_increment.iter_mut().for_each(|w| *w = 0.0);
-                for sub in 0..m {
-                    let info = solver.solve_into(&shape, direction, &mut sol);
-                    track(info, &mut hist);
-                    let part: Vec<f64> = self
-                        .laws
-                        .iter()
-                        .map(|l| {
-                            if monotonic {
-                                self.sliding(l.a) / m as f64
-                            } else {
-                                partial_sliding(
-                                    self.spec.amplitude,
-                                    self.spec.omega,
-                                    l.a,
-                                    [
-                                        std::f64::consts::PI * sub as f64 / m as f64,
-                                        std::f64::consts::PI * (sub + 1) as f64 / m as f64,
-                                    ],
-                                )
-                            }
-                        })
-                        .collect();
-                    self.wear_increment(&sol.pressure, &part, k as f64, &mut increment);
-                    for i in 0..n {
-                        shape[i] += increment[i];
-                        new_increment[i] += increment[i];
-                    }
-                }
-                let info = solver.solve_into(&shape, direction, &mut sol);
-                track(info, &mut hist);
-                iterations = m;
-                // Report one half period's wear, not k of them (as the half-period scheme does).
-                for i in 0..n {
-                    increment[i] = new_increment[i] / k as f64;
-                }
+            let mut count = SolveCount::default();
+            let (iterations, criterion) = if self.spec.substeps > 0 {
+                let iterations =
+                    self.explicit_step(solver, &mut shape, direction, k, &mut ws, &mut count);
+                (iterations, 0.0)
             } else {
-                let info = solver.solve_into(&shape, direction, &mut sol);
-                track(info, &mut hist);
-                self.wear_increment(&sol.pressure, &sliding, k as f64, &mut increment);
-                let mut converged = false;
-                // The fixed-point iteration is a contraction only while k·∂W/∂p times the
-                // contact compliance stays below one, which large k or b > 1 break. Aitken's
-                // dynamic relaxation (Irons–Tuck) picks the step from the last two residuals
-                // r = W(p(g + Δw)) − Δw; the first step is the plain one.
-                let mut relaxation = 1.0;
-                for iteration in 0..self.spec.max_iterations {
-                    iterations += 1;
-                    for i in 0..n {
-                        trial[i] = shape[i] + increment[i];
-                    }
-                    let info = solver.solve_into(&trial, direction, &mut sol);
-                    track(info, &mut hist);
-                    self.wear_increment(&sol.pressure, &sliding, k as f64, &mut new_increment);
-                    criterion = if pointwise {
-                        let largest = new_increment.iter().fold(0.0f64, |m, w| m.max(w.abs()));
-                        let change = new_increment
-                            .iter()
-                            .zip(&increment)
-                            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-                        100.0 * change / largest.max(f64::MIN_POSITIVE)
-                    } else {
-                        let before = integral(&trial);
-                        let after = integral(&shape) + integral(&new_increment);
-                        100.0 * (after - before).abs() / before.abs().max(f64::MIN_POSITIVE)
-                    };
-                    if criterion <= self.spec.tolerance {
-                        std::mem::swap(&mut increment, &mut new_increment);
-                        converged = true;
-                        break;
-                    }
-                    let (mut dot, mut norm) = (0.0, 0.0);
-                    for i in 0..n {
-                        let r = new_increment[i] - increment[i];
-                        let dr = r - residual[i];
-                        dot += residual[i] * dr;
-                        norm += dr * dr;
-                        residual[i] = r;
-                    }
-                    if iteration > 0 && norm > 0.0 {
-                        // Bounded so that a noisy estimate can neither stall nor overshoot.
-                        relaxation = (-relaxation * dot / norm).clamp(1e-3, 2.0);
-                    }
-                    for i in 0..n {
-                        increment[i] += relaxation * residual[i];
-                    }
-                }
-                if !converged {
-                    hist.unconverged_steps += 1;
-                    // Keep the last evaluated wear, not the relaxed iterate: that one was never
-                    // checked and, with a relaxation factor above one, could even be negative.
-                    std::mem::swap(&mut increment, &mut new_increment);
-                }
-                for i in 0..n {
-                    shape[i] += increment[i];
-                }
-                // Report one half period's wear, not k of them.
-                for w in increment.iter_mut() {
-                    *w /= k as f64;
-                }
-            }
-            hist.solves += solves;
+                let (iterations, criterion, converged) =
+                    self.implicit_step(solver, &mut shape, direction, k, &mut ws, &mut count);
+                hist.unconverged_steps += usize::from(!converged);
+                (iterations, criterion)
+            };
+            hist.solves += count.solves;
+            hist.failed_solves += count.failed;
+            let (pressure, increment) = (&ws.solution.pressure, &ws.increment);
             let dissipation: f64 = (0..n)
-                .map(|i| sol.pressure[i] * increment[i] * points.weight[i])
+                .map(|i| pressure[i] * increment[i] * points.weight[i])
                 .sum::<f64>()
                 * contact.thickness;
-            let mut delta_w = 0.0;
             if direction == Direction::Plus || monotonic {
-                hist.p_plus.copy_from_slice(&sol.pressure);
+                hist.p_plus.copy_from_slice(pressure);
             } else {
-                hist.p_minus.copy_from_slice(&sol.pressure);
+                hist.p_minus.copy_from_slice(pressure);
             }
+            let mut delta_w = 0.0;
             if first_half && !monotonic {
-                cycle_wear.copy_from_slice(&increment);
+                cycle_wear.copy_from_slice(increment);
             } else {
-                if monotonic {
-                    // Under monotonic sliding a step is the whole cycle: δw is that step's wear.
-                    cycle_wear.copy_from_slice(&increment);
-                } else {
-                    for i in 0..n {
-                        cycle_wear[i] += increment[i];
-                    }
+                // A full cycle ends here (under monotonic sliding every step is one).
+                for i in 0..n {
+                    cycle_wear[i] = increment[i] + if monotonic { 0.0 } else { cycle_wear[i] };
                 }
                 let min = cycle_wear.iter().cloned().fold(f64::INFINITY, f64::min);
                 delta_w = cycle_wear.iter().map(|w| w - min).fold(0.0, f64::max);
                 if let Some(weights) = &zero_at {
-                    // Shift by a vertical rigid translation of body 1, which changes the gap by
-                    // n_c·(−e_z) at each point (1 under a flat punch, cos α on an arc) and so
-                    // leaves every pressure unchanged: the plate's λ_F takes it up.
-                    let mode = |i: usize| -points.normal[i][1];
-                    let at_ref: f64 = weights.iter().map(|&(i, w)| w * mode(i)).sum();
-                    if at_ref.abs() > 1e-12 {
-                        let offset =
-                            weights.iter().map(|&(i, w)| w * shape[i]).sum::<f64>() / at_ref;
-                        for (i, g) in shape.iter_mut().enumerate() {
-                            *g -= offset * mode(i);
-                        }
-                    }
+                    shift_to_zero(&mut shape, weights, points);
                 }
             }
             let record = StepRecord {
@@ -525,10 +397,10 @@ impl WearIntegrator {
                 direction: direction.symbol(),
                 k,
                 iterations,
-                solves,
+                solves: count.solves,
                 criterion,
                 dissipation,
-                probes: probe_points.iter().map(|&i| sol.pressure[i]).collect(),
+                probes: probe_points.iter().map(|&i| pressure[i]).collect(),
                 delta_w,
             };
             on_step(&record);
@@ -538,13 +410,204 @@ impl WearIntegrator {
                     step,
                     half_period: half_periods,
                     direction: direction.symbol(),
-                    pressure: sol.pressure.clone(),
+                    pressure: pressure.clone(),
                     shape: shape.clone(),
                 });
             }
         }
         hist.shape = shape;
         hist
+    }
+
+    /// One step of plain explicit stepping: `substeps` sub-steps per half period, each with the
+    /// pressure of the shape at its start. Leaves in `ws.increment` the wear of one half period
+    /// (the applied total over k) and in `ws.solution` the contact solution at the new shape.
+    /// Returns the number of sub-steps.
+    fn explicit_step(
+        &self,
+        solver: &mut ContactSolver,
+        shape: &mut [f64],
+        direction: Direction,
+        k: usize,
+        ws: &mut Workspace,
+        count: &mut SolveCount,
+    ) -> usize {
+        let m = self.spec.substeps;
+        let monotonic = self.is_monotonic();
+        // `new_increment` sums what the sub-steps really wore.
+        ws.new_increment.iter_mut().for_each(|w| *w = 0.0);
+        for sub in 0..m {
+            count.track(solver.solve_into(shape, direction, &mut ws.solution));
+            let part: Vec<f64> = self
+                .laws
+                .iter()
+                .map(|l| {
+                    if monotonic {
+                        self.sliding(l.a) / m as f64
+                    } else {
+                        let start = std::f64::consts::PI * sub as f64 / m as f64;
+                        let end = std::f64::consts::PI * (sub + 1) as f64 / m as f64;
+                        partial_sliding(self.spec.amplitude, self.spec.omega, l.a, [start, end])
+                    }
+                })
+                .collect();
+            self.wear_increment(&ws.solution.pressure, &part, k as f64, &mut ws.increment);
+            for ((g, total), w) in shape
+                .iter_mut()
+                .zip(ws.new_increment.iter_mut())
+                .zip(&ws.increment)
+            {
+                *g += w;
+                *total += w;
+            }
+        }
+        count.track(solver.solve_into(shape, direction, &mut ws.solution));
+        for i in 0..shape.len() {
+            ws.increment[i] = ws.new_increment[i] / k as f64;
+        }
+        m
+    }
+
+    /// One step of the paper's half-period scheme (eq. 24–30): the wear of k half periods at
+    /// the pressure of the end of the step, iterated until the criterion holds. Leaves in
+    /// `ws.increment` the wear of one half period and in `ws.solution` the contact solution
+    /// it was computed from. Returns (iterations, last criterion in %, converged).
+    fn implicit_step(
+        &self,
+        solver: &mut ContactSolver,
+        shape: &mut [f64],
+        direction: Direction,
+        k: usize,
+        ws: &mut Workspace,
+        count: &mut SolveCount,
+    ) -> (usize, f64, bool) {
+        let n = shape.len();
+        let sliding = &ws.sliding;
+        count.track(solver.solve_into(shape, direction, &mut ws.solution));
+        self.wear_increment(&ws.solution.pressure, sliding, k as f64, &mut ws.increment);
+        let (mut iterations, mut criterion, mut converged) = (0, 0.0, false);
+        // The fixed-point iteration is a contraction only while k·∂W/∂p times the contact
+        // compliance stays below one, which large k or b > 1 break. Aitken's dynamic relaxation
+        // (Irons–Tuck) picks the step from the last two residuals r = W(p(g + Δw)) − Δw; the
+        // first step is the plain one.
+        let mut relaxation = 1.0;
+        for iteration in 0..self.spec.max_iterations {
+            iterations += 1;
+            for ((t, g), w) in ws.trial.iter_mut().zip(shape.iter()).zip(&ws.increment) {
+                *t = g + w;
+            }
+            count.track(solver.solve_into(&ws.trial, direction, &mut ws.solution));
+            self.wear_increment(
+                &ws.solution.pressure,
+                &ws.sliding,
+                k as f64,
+                &mut ws.new_increment,
+            );
+            criterion = self.criterion(shape, ws);
+            if criterion <= self.spec.tolerance {
+                converged = true;
+                break;
+            }
+            let (mut dot, mut norm) = (0.0, 0.0);
+            for i in 0..n {
+                let r = ws.new_increment[i] - ws.increment[i];
+                let dr = r - ws.residual[i];
+                dot += ws.residual[i] * dr;
+                norm += dr * dr;
+                ws.residual[i] = r;
+            }
+            if iteration > 0 && norm > 0.0 {
+                // Bounded so that a noisy estimate can neither stall nor overshoot.
+                relaxation = (-relaxation * dot / norm).clamp(1e-3, 2.0);
+            }
+            for i in 0..n {
+                ws.increment[i] += relaxation * ws.residual[i];
+            }
+        }
+        // Keep the last evaluated wear (converged or not): a relaxed iterate was never checked
+        // and, with a relaxation factor above one, could even be negative.
+        std::mem::swap(&mut ws.increment, &mut ws.new_increment);
+        for (g, w) in shape.iter_mut().zip(ws.increment.iter_mut()) {
+            *g += *w;
+            // Report one half period's wear, not k of them.
+            *w /= k as f64;
+        }
+        (iterations, criterion, converged)
+    }
+
+    /// The implicit criterion in percent between the trial increment `ws.increment` and the
+    /// wear `ws.new_increment` it produced: eq. 27 (the integral of the trial gap) or the
+    /// largest pointwise change.
+    fn criterion(&self, shape: &[f64], ws: &Workspace) -> f64 {
+        if self.spec.criterion == "pointwise" {
+            let largest = ws.new_increment.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+            let change = ws
+                .new_increment
+                .iter()
+                .zip(&ws.increment)
+                .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+            100.0 * change / largest.max(f64::MIN_POSITIVE)
+        } else {
+            let integral = |g: &[f64]| g.iter().zip(&ws.weight).map(|(a, w)| a * w).sum::<f64>();
+            let before = integral(&ws.trial);
+            let after = integral(shape) + integral(&ws.new_increment);
+            100.0 * (after - before).abs() / before.abs().max(f64::MIN_POSITIVE)
+        }
+    }
+}
+
+/// Buffers of one run, sized once so that the step loop does not allocate.
+struct Workspace {
+    /// ∫|v|ᵃ dτ of one half period for each wear law.
+    sliding: Vec<f64>,
+    /// Lobatto weight × edge Jacobian of each contact point (mm), for eq. 27's integral.
+    weight: Vec<f64>,
+    trial: Vec<f64>,
+    increment: Vec<f64>,
+    new_increment: Vec<f64>,
+    residual: Vec<f64>,
+    solution: ContactSolution,
+}
+
+impl Workspace {
+    fn new(n: usize) -> Workspace {
+        Workspace {
+            sliding: vec![],
+            weight: vec![0.0; n],
+            trial: vec![0.0; n],
+            increment: vec![0.0; n],
+            new_increment: vec![0.0; n],
+            residual: vec![0.0; n],
+            solution: ContactSolution::default(),
+        }
+    }
+}
+
+/// Contact solves of one step, and how many of them failed.
+#[derive(Default)]
+struct SolveCount {
+    solves: usize,
+    failed: usize,
+}
+
+impl SolveCount {
+    fn track(&mut self, info: SolveInfo) {
+        self.solves += 1;
+        self.failed += usize::from(info.status == Status::Failed);
+    }
+}
+
+/// Shift `shape` to zero at the interpolation point `weights` by a vertical rigid translation
+/// of body 1. It changes the gap by n_c·(−e_z) at each point (1 under a flat punch, cos α on
+/// an arc) and so leaves every pressure unchanged: the plate's λ_F takes it up.
+fn shift_to_zero(shape: &mut [f64], weights: &[(usize, f64)], points: &ContactPoints) {
+    let mode = |i: usize| -points.normal[i][1];
+    let at_ref: f64 = weights.iter().map(|&(i, w)| w * mode(i)).sum();
+    if at_ref.abs() > 1e-12 {
+        let offset = weights.iter().map(|&(i, w)| w * shape[i]).sum::<f64>() / at_ref;
+        for (i, g) in shape.iter_mut().enumerate() {
+            *g -= offset * mode(i);
+        }
     }
 }
 
