@@ -22,10 +22,16 @@ use std::collections::HashMap;
 pub enum ElasticityError {
     /// The stiffness matrix is not positive definite: the body can move as a rigid body.
     #[error("the stiffness matrix of body \"{body}\" is singular: the supports do not prevent rigid-body motion")]
-    Singular { body: String },
+    Singular {
+        /// Name of the body.
+        body: String,
+    },
     /// An internal-mode block failed to factorise (a degenerate element).
     #[error("element {element}: internal-mode stiffness is not positive definite")]
-    Internal { element: usize },
+    Internal {
+        /// Element index in the body's mesh.
+        element: usize,
+    },
 }
 
 /// Discretisation settings of one body.

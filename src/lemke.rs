@@ -11,13 +11,24 @@
 pub enum LemkeError {
     /// The entering column has no positive entry, so the path is unbounded.
     #[error("Lemke's method ended on a secondary ray after {pivots} pivots: the LCP has no solution reachable from this start (M is not copositive-plus?)")]
-    Ray { pivots: usize },
+    Ray {
+        /// Pivots made before the ray.
+        pivots: usize,
+    },
     /// The pivot budget was exhausted.
     #[error("Lemke's method did not finish in {pivots} pivots")]
-    MaxPivots { pivots: usize },
+    MaxPivots {
+        /// The pivot budget.
+        pivots: usize,
+    },
     /// `m.len()` is not `q.len()²`.
     #[error("LCP dimensions do not match: M has {m_len} entries, q has {n}")]
-    Dimension { m_len: usize, n: usize },
+    Dimension {
+        /// Entries of M.
+        m_len: usize,
+        /// Entries of q.
+        n: usize,
+    },
     /// NaN or infinity in `m` or `q`.
     #[error("LCP data contain a non-finite number")]
     NonFinite,

@@ -29,6 +29,8 @@
 //!
 //! Units everywhere: mm, N, MPa (N/mm²), s.
 
+#![warn(missing_docs)]
+
 pub mod basis;
 pub mod complementarity;
 pub mod contact;

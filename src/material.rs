@@ -13,9 +13,15 @@ pub struct Material {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Analysis {
     /// σ_yy = 0: thin plates; `thickness` in mm.
-    PlaneStress { thickness: f64 },
+    PlaneStress {
+        /// Thickness, mm.
+        thickness: f64,
+    },
     /// ε_yy = 0: long bodies; forces are reported for a slice of `thickness` mm.
-    PlaneStrain { thickness: f64 },
+    PlaneStrain {
+        /// Thickness of the reported slice, mm.
+        thickness: f64,
+    },
 }
 
 impl Analysis {

@@ -16,18 +16,29 @@ pub enum MeshError {
         "block {block}: mesh lines along {direction} must rise strictly from 0 to 1, got {lines:?}"
     )]
     BadLines {
+        /// Block index in the body.
         block: usize,
+        /// "u" or "v".
         direction: &'static str,
+        /// The mesh lines given.
         lines: Vec<f64>,
     },
     /// A vertex lies inside another element's edge: the blocks' mesh lines do not match.
     #[error("mesh is not conforming: vertex at ({x}, {z}) mm lies inside an element edge (do the mesh lines of neighbouring blocks match?)")]
-    Hanging { x: f64, z: f64 },
+    Hanging {
+        /// x of the vertex, mm.
+        x: f64,
+        /// z of the vertex, mm.
+        z: f64,
+    },
     /// An element folds over (non-positive Jacobian) somewhere.
     #[error("element {element} of block {block} is folded (Jacobian determinant {det})")]
     Folded {
+        /// Element index in the mesh.
         element: usize,
+        /// Block index in the body.
         block: usize,
+        /// A non-positive Jacobian determinant found in the element, mm².
         det: f64,
     },
 }
@@ -91,7 +102,7 @@ pub struct Mesh {
 /// Local edge → (start, end) local vertex, in the element-edge convention of [`crate::basis`].
 pub const EDGE_ENDPOINTS: [(usize, usize); 4] = [(0, 1), (1, 2), (3, 2), (0, 3)];
 
-/// Block edge index (bottom, right, top, left) for an element's local edge — the same numbers.
+/// Mesh lines of one block direction must rise strictly from 0 to 1 and be finite.
 fn check_lines(block: usize, direction: &'static str, lines: &[f64]) -> Result<(), MeshError> {
     let ok = lines.len() >= 2
         && lines[0] == 0.0
