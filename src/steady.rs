@@ -419,7 +419,6 @@ fn continuation(
         let (stage_status, used) =
             system.newton(&stage(target), &mut trial_z, &mut trial_active, settings);
         iterations += used;
-        eprintln!("DEBUG t {t} target {target} {stage_status:?} {used}");
         if stage_status == SteadyStatus::Solved {
             (*z, *active, t) = (trial_z, trial_active, target);
         } else if step > 1.0 / 64.0 {
