@@ -254,6 +254,13 @@ impl ElasticBody {
         for &d in &constraints.fixed {
             fixed[d] = true;
         }
+        if !prevents_rigid_motion(&mesh, &dofs, &fixed) {
+            // The factorisation alone would not catch it: on curved elements round-off leaves
+            // the rigid-body pivots tiny but positive, and the solve returns nonsense.
+            return Err(ElasticityError::Singular {
+                body: name.to_string(),
+            });
+        }
         let pattern = Pattern::new(&mesh, &dofs);
         let values = assemble(&mesh, &dofs, &pattern, &element_type, &types, &fixed);
         let info = SetupInfo {
@@ -336,6 +343,44 @@ impl ElasticBody {
     pub fn is_fixed(&self, d: usize) -> bool {
         self.fixed[d]
     }
+}
+
+/// Whether the fixed vertex dofs rule out every plane rigid-body motion (two translations and
+/// a rotation). Each fixed component at a vertex (x, z) is a row of the constraint matrix on
+/// (t_x, t_z, θ): [1, 0, −z] or [0, 1, x], in coordinates centred and scaled by the mesh; the
+/// motion is prevented when the 3 × 3 Gram matrix of the rows is far from singular.
+fn prevents_rigid_motion(mesh: &Mesh, dofs: &DofMap, fixed: &[bool]) -> bool {
+    let count = mesh.vertices.len().max(1) as f64;
+    let centre = mesh
+        .vertices
+        .iter()
+        .fold([0.0, 0.0], |c, v| [c[0] + v[0] / count, c[1] + v[1] / count]);
+    let size = mesh
+        .vertices
+        .iter()
+        .map(|v| (v[0] - centre[0]).hypot(v[1] - centre[1]))
+        .fold(0.0f64, f64::max)
+        .max(f64::MIN_POSITIVE);
+    let mut gram = [[0.0f64; 3]; 3];
+    for (v, x) in mesh.vertices.iter().enumerate() {
+        let (dx, dz) = ((x[0] - centre[0]) / size, (x[1] - centre[1]) / size);
+        let rows = [[1.0, 0.0, -dz], [0.0, 1.0, dx]];
+        for (c, row) in rows.iter().enumerate() {
+            if fixed[dofs.vertex_dof(v, c)] {
+                for a in 0..3 {
+                    for b in 0..3 {
+                        gram[a][b] += row[a] * row[b];
+                    }
+                }
+            }
+        }
+    }
+    let det = gram[0][0] * (gram[1][1] * gram[2][2] - gram[1][2] * gram[2][1])
+        - gram[0][1] * (gram[1][0] * gram[2][2] - gram[1][2] * gram[2][0])
+        + gram[0][2] * (gram[1][0] * gram[2][1] - gram[1][1] * gram[2][0]);
+    let trace = gram[0][0] + gram[1][1] + gram[2][2];
+    // det/trace³ is scale-free and bounded by 1/27; 1e-12 only rejects true rank loss.
+    trace > 0.0 && det / trace.powi(3) > 1e-12
 }
 
 /// Add every element's condensed stiffness into the pattern's value array, block by block,
