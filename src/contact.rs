@@ -527,8 +527,8 @@ fn plate_modes(
         ("vertical_rotation", None) => {
             return Err(problem.error("plate.pin", "rotation needs a pin [x, z]"))
         }
-        (_, Some(p)) if !p.iter().all(|c| c.is_finite()) => {
-            return Err(problem.error("plate.pin", "must be finite coordinates [x, z] (mm)"))
+        (_, Some(p)) if !p.iter().all(|c| c.abs() <= crate::problem::MAX_COORDINATE) => {
+            return Err(problem.error("plate.pin", "must be coordinates [x, z] within ±1e6 mm"))
         }
         (_, Some(p)) => p,
         (_, None) => {

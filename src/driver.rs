@@ -278,6 +278,7 @@ impl WearRun {
             "solves": h.solves,
             "failed_solves": h.failed_solves,
             "unconverged_steps": h.unconverged_steps,
+            "stopped_at_step": h.stopped_at,
             "setup_seconds": self.setup_seconds,
             "run_seconds": self.run_seconds,
         })

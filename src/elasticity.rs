@@ -351,10 +351,9 @@ impl ElasticBody {
 /// motion is prevented when the 3 × 3 Gram matrix of the rows is far from singular.
 fn prevents_rigid_motion(mesh: &Mesh, dofs: &DofMap, fixed: &[bool]) -> bool {
     let count = mesh.vertices.len().max(1) as f64;
-    let centre = mesh
-        .vertices
-        .iter()
-        .fold([0.0, 0.0], |c, v| [c[0] + v[0] / count, c[1] + v[1] / count]);
+    let centre = mesh.vertices.iter().fold([0.0, 0.0], |c, v| {
+        [c[0] + v[0] / count, c[1] + v[1] / count]
+    });
     let size = mesh
         .vertices
         .iter()

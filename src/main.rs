@@ -162,6 +162,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 None => vec!["no steps".to_string()],
             };
             println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '{first}' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
+            if let Some(step) = h.stopped_at {
+                return Err(Failure::Compute(format!("the wear increment of step {step} is not finite (β̃, the exponents or the load are far out of range); the run stopped there and the steps before it were written to {}", out.display())));
+            }
             if h.failed_solves > 0 || h.unconverged_steps > 0 {
                 return Err(Failure::Compute(format!("{} contact solves failed and {} steps missed the implicit criterion (wear.criterion); results kept in {}", h.failed_solves, h.unconverged_steps, out.display())));
             }

@@ -11,6 +11,12 @@ use crate::material::{Analysis, Material};
 use crate::mesh::{Mesh, MeshBlock};
 pub use crate::schema::*;
 
+/// Largest coordinate, length or radius accepted, mm: a kilometre, beyond which double
+/// precision no longer resolves elastic displacements of ordinary parts.
+pub const MAX_COORDINATE: f64 = 1e6;
+/// Largest modulus or traction accepted, MPa: 1000 times diamond's Young's modulus.
+pub const MAX_STRESS: f64 = 1e9;
+
 /// A problem-file error: which file, which key, what is wrong.
 #[derive(Debug, thiserror::Error)]
 #[error("{file}: {key}: {message}")]
@@ -71,10 +77,13 @@ impl Problem {
             message,
         };
         let a = &spec.analysis;
-        if !(a.thickness.is_finite() && a.thickness > 0.0) {
+        if !(a.thickness > 0.0 && a.thickness <= MAX_COORDINATE) {
             return Err(err(
                 "analysis.thickness",
-                format!("must be a positive length in mm, got {}", a.thickness),
+                format!(
+                    "must be a positive length of at most {MAX_COORDINATE:e} mm, got {}",
+                    a.thickness
+                ),
             ));
         }
         let analysis = match a.kind.as_str() {
@@ -109,10 +118,13 @@ impl Problem {
         };
         let mut materials = Vec::new();
         for (name, m) in &spec.materials {
-            if !(m.young.is_finite() && m.young > 0.0) {
+            if !(m.young > 0.0 && m.young <= MAX_STRESS) {
                 return Err(err(
                     &format!("materials.{name}.young"),
-                    format!("Young's modulus must be positive (MPa), got {}", m.young),
+                    format!(
+                        "Young's modulus must be positive and at most {MAX_STRESS:e} MPa, got {}",
+                        m.young
+                    ),
                 ));
             }
             if !(m.poisson.is_finite() && m.poisson > -1.0 && m.poisson < 0.5) {
@@ -144,8 +156,11 @@ impl Problem {
             }
         }
         if let Some(shape) = spec.contact.as_ref().and_then(|c| c.initial_shape) {
-            if !(shape.radius.is_finite() && shape.radius > 0.0 && shape.center_x.is_finite()) {
-                return Err(err("contact.initial_shape", format!("radius must be a positive length (mm) and center_x finite, got radius {} and center_x {}", shape.radius, shape.center_x)));
+            if !(shape.radius > 0.0
+                && shape.radius <= MAX_COORDINATE
+                && shape.center_x.abs() <= MAX_COORDINATE)
+            {
+                return Err(err("contact.initial_shape", format!("radius must be a positive length of at most {MAX_COORDINATE:e} mm and center_x within ±{MAX_COORDINATE:e} mm, got radius {} and center_x {}", shape.radius, shape.center_x)));
             }
         }
         let problem = Problem {
@@ -165,10 +180,13 @@ impl Problem {
                     format!("no body named \"{}\"", probe.body),
                 )
             })?;
-            if !probe.at.iter().all(|c| c.is_finite()) {
+            if !probe.at.iter().all(|c| c.abs() <= MAX_COORDINATE) {
                 return Err(problem.error(
                     format!("probes.{name}.at"),
-                    format!("must be finite coordinates [x, z] (mm), got {:?}", probe.at),
+                    format!(
+                        "must be coordinates [x, z] within ±{MAX_COORDINATE:e} mm, got {:?}",
+                        probe.at
+                    ),
                 ));
             }
         }
@@ -205,8 +223,17 @@ impl Problem {
                 }
                 shapes[arc.edge] = EdgeShape::ArcAbout(arc.center);
             }
-            if bs.corners.iter().flatten().any(|c| !c.is_finite()) {
-                return Err(self.error(key("corners"), "coordinates must be finite numbers"));
+            let coordinates = bs
+                .corners
+                .iter()
+                .flatten()
+                .chain(bs.arcs.iter().flat_map(|a| &a.center));
+            if coordinates.clone().any(|c| !(c.abs() <= MAX_COORDINATE)) {
+                // Beyond this, double precision cannot resolve the elastic displacements.
+                return Err(self.error(
+                    key("corners"),
+                    format!("coordinates (and arc centres) must be finite and within ±{MAX_COORDINATE:e} mm"),
+                ));
             }
             let block = Block::new(bs.corners, shapes)
                 .map_err(|e| self.error(key("corners"), e.to_string()))?;
@@ -295,11 +322,16 @@ impl Problem {
                 }
             }
             let (normal, shear) = (t.normal.pair(), t.shear.pair());
-            if normal.iter().chain(&shear).any(|v| !v.is_finite()) {
-                return Err(self.error(key("normal"), "values must be finite"));
-            }
-            if window.is_none() && (normal[0] != normal[1] || shear[0] != shear[1]) {
-                return Err(self.error(key("normal"), "a linear variation needs a window"));
+            for (name, values) in [("normal", normal), ("shear", shear)] {
+                if values.iter().any(|v| !(v.abs() <= MAX_STRESS)) {
+                    return Err(self.error(
+                        key(name),
+                        format!("values must be finite and at most {MAX_STRESS:e} MPa in size, got {values:?}"),
+                    ));
+                }
+                if window.is_none() && values[0] != values[1] {
+                    return Err(self.error(key(name), "a linear variation needs a window"));
+                }
             }
             out.push(Traction {
                 edge: t.edge.clone(),

@@ -153,7 +153,14 @@ pub struct WearHistory {
     pub unconverged_steps: usize,
     /// Contact solves that failed (the last iterate was kept).
     pub failed_solves: usize,
+    /// The step at which the wear stopped being finite, if it did; the run ended before it.
+    pub stopped_at: Option<usize>,
 }
+
+/// Most steps a run may have (each keeps a record of about 100 bytes).
+pub const MAX_STEPS: usize = 10_000_000;
+/// Largest extrapolation factor k.
+pub const MAX_FACTOR: usize = 1_000_000;
 
 /// The integrator: wear laws, kinematics and schedule, validated.
 #[derive(Clone, Debug)]
@@ -179,11 +186,12 @@ impl WearIntegrator {
                         format!("must be ≥ 0, got {}", l.beta),
                     );
                 }
-                if !(l.a.is_finite() && l.a > 0.0 && l.b.is_finite() && l.b > 0.0) {
+                // Measured exponents lie between about 0.3 and 4; beyond 10 only overflow waits.
+                if !(l.a > 0.0 && l.a <= 10.0 && l.b > 0.0 && l.b <= 10.0) {
                     return bad(
                         name,
                         format!(
-                            "exponents a and b must be positive, got a = {}, b = {}",
+                            "exponents a and b must lie in (0, 10], got a = {}, b = {}",
                             l.a, l.b
                         ),
                     );
@@ -245,15 +253,32 @@ impl WearIntegrator {
                 ),
             );
         }
-        if spec.steps == 0 {
-            return bad("steps", "must be at least 1".into());
+        // Upper limits far beyond any use, so that a typo cannot exhaust memory (one record per
+        // step), run for days, or overflow the half-period counter.
+        if !(1..=MAX_STEPS).contains(&spec.steps) {
+            return bad(
+                "steps",
+                format!("must be 1 … {MAX_STEPS}, got {}", spec.steps),
+            );
         }
-        if spec.max_iterations == 0 {
-            return bad("max_iterations", "must be at least 1".into());
+        if !(1..=10_000).contains(&spec.max_iterations) {
+            return bad(
+                "max_iterations",
+                format!("must be 1 … 10000, got {}", spec.max_iterations),
+            );
+        }
+        if spec.substeps > 10_000 {
+            return bad(
+                "substeps",
+                format!("must be 0 … 10000, got {}", spec.substeps),
+            );
         }
         let schedule = spec.extrapolation.clone().unwrap_or_else(paper_schedule);
-        if schedule.is_empty() || schedule.iter().any(|e| e.k == 0) {
-            return bad("extrapolation", "needs entries with k ≥ 1".into());
+        if schedule.is_empty() || schedule.iter().any(|e| !(1..=MAX_FACTOR).contains(&e.k)) {
+            return bad(
+                "extrapolation",
+                format!("needs entries with 1 ≤ k ≤ {MAX_FACTOR}"),
+            );
         }
         let bounds: Vec<usize> = schedule.iter().filter_map(|e| e.until).collect();
         if bounds.first() == Some(&0)
@@ -270,12 +295,24 @@ impl WearIntegrator {
         if spec.shape_zero_at.is_some_and(|x| !x.is_finite()) {
             return bad("shape_zero_at", "must be a finite x coordinate (mm)".into());
         }
-        Ok(WearIntegrator {
+        let integrator = WearIntegrator {
             spec: spec.clone(),
             schedule,
             laws,
             first_direction: Direction::Plus,
-        })
+        };
+        for (name, law) in [("body1", spec.body1), ("body2", spec.body2)] {
+            if let Some(l) = law {
+                let per_half_period = l.beta * integrator.sliding(l.a);
+                if !per_half_period.is_finite() {
+                    return bad(
+                        &format!("{name}.beta"),
+                        format!("β̃ ∫|v|ᵃ dτ overflows ({per_half_period}): β̃, a or the sliding amplitude/speed is out of range"),
+                    );
+                }
+            }
+        }
+        Ok(integrator)
     }
 
     /// The wear of one half period (one monotonic step) as terms (c, b): Δw = Σ c pᵇ, with
@@ -327,6 +364,7 @@ impl WearIntegrator {
         ws.weight.copy_from_slice(&points.weight);
         ws.sliding = self.laws.iter().map(|l| self.sliding(l.a)).collect();
         let mut shape = initial.to_vec();
+        ws.last_shape.copy_from_slice(&shape);
         let mut cycle_wear = vec![0.0; n];
         let mut hist = WearHistory {
             steps: Vec::with_capacity(self.spec.steps),
@@ -337,6 +375,7 @@ impl WearIntegrator {
             solves: 0,
             unconverged_steps: 0,
             failed_solves: 0,
+            stopped_at: None,
         };
         let monotonic = self.is_monotonic();
         let zero_at = self
@@ -367,6 +406,15 @@ impl WearIntegrator {
             };
             hist.solves += count.solves;
             hist.failed_solves += count.failed;
+            if !(shape.iter().all(|g| g.is_finite()) && ws.increment.iter().all(|w| w.is_finite()))
+            {
+                // Wear too large for the arithmetic (β̃ or the load far out of range): stop with
+                // what was computed so far rather than write infinities.
+                hist.stopped_at = Some(step);
+                shape.copy_from_slice(&ws.last_shape);
+                break;
+            }
+            ws.last_shape.copy_from_slice(&shape);
             let (pressure, increment) = (&ws.solution.pressure, &ws.increment);
             let dissipation: f64 = (0..n)
                 .map(|i| pressure[i] * increment[i] * points.weight[i])
@@ -566,6 +614,8 @@ struct Workspace {
     increment: Vec<f64>,
     new_increment: Vec<f64>,
     residual: Vec<f64>,
+    /// The shape after the last step whose wear was finite.
+    last_shape: Vec<f64>,
     solution: ContactSolution,
 }
 
@@ -578,6 +628,7 @@ impl Workspace {
             increment: vec![0.0; n],
             new_increment: vec![0.0; n],
             residual: vec![0.0; n],
+            last_shape: vec![0.0; n],
             solution: ContactSolution::default(),
         }
     }
