@@ -257,6 +257,12 @@ fn project_on_body2(
         } else {
             continue;
         };
+        // Only a surface that faces body 1 can be its partner: its outward normal must point
+        // back against n (an edge on the far side of body 2 also crosses the normal line).
+        let (_, outward) = body.mesh.edge_frame(element, local, t);
+        if outward[0] * n[0] + outward[1] * n[1] >= 0.0 {
+            continue;
+        }
         let y = body.mesh.point_on_edge(element, local, t);
         let s = (y[0] - x[0]) * n[0] + (y[1] - x[1]) * n[1];
         if best.is_none_or(|b| s.abs() < b.0.abs()) {
@@ -365,6 +371,12 @@ impl CondensedContact {
     ) -> Result<CondensedContact, ProblemError> {
         let (c, b1, b2) = Self::spec(problem)?;
         let plate = problem.spec.plate.clone();
+        if plate.as_ref().is_some_and(|p| p.edge == c.edge) {
+            return Err(problem.error(
+                "plate.edge",
+                "must differ from contact.edge: the plate clamps its edge, the contact edge must be free to deform",
+            ));
+        }
         let edge1 = problem
             .named_edge(&body1.mesh, b1, &c.edge, "contact.edge")?
             .to_vec();
@@ -384,7 +396,7 @@ impl CondensedContact {
         let mut traces2 = Vec::with_capacity(points.x.len());
         for i in 0..points.x.len() {
             let (s, tr) = project_on_body2(body2, &edge2, points.x[i], points.normal[i]).ok_or_else(|| {
-                problem.error("contact.target_edge", format!("contact point ({:.4}, {:.4}) of body 1 has no partner on \"{}\" along its normal", points.x[i][0], points.x[i][1], c.target_edge))
+                problem.error("contact.target_edge", format!("contact point ({:.4}, {:.4}) of body 1 has no partner on \"{}\" along its normal (a part of the edge that crosses the normal line and faces body 1)", points.x[i][0], points.x[i][1], c.target_edge))
             })?;
             let shape = c.initial_shape.map_or(0.0, |sh| {
                 let dx = points.x[i][0] - sh.center_x;

@@ -31,6 +31,19 @@ pub enum MeshError {
         /// z of the vertex, mm.
         z: f64,
     },
+    /// Two blocks overlap (an element edge shared by more than two elements, or two elements
+    /// on the same vertices).
+    #[error("block {block} overlaps another block (is a block listed twice?)")]
+    Overlap {
+        /// Block index in the body.
+        block: usize,
+    },
+    /// Some elements do not connect to the rest through a shared edge.
+    #[error("block {block} is not joined to the rest of the body along an edge (blocks of one body must share whole mesh edges)")]
+    Disconnected {
+        /// Block index in the body.
+        block: usize,
+    },
     /// An element folds over (non-positive Jacobian) somewhere.
     #[error("element {element} of block {block} is folded (Jacobian determinant {det})")]
     Folded {
@@ -197,7 +210,43 @@ impl Mesh {
         }
         mesh.check_conforming(merge_tolerance)?;
         mesh.check_jacobians()?;
+        mesh.check_topology()?;
         Ok(mesh)
+    }
+
+    /// Each element edge is shared by at most two elements and no two elements have the same
+    /// vertices (else blocks overlap, e.g. one listed twice); all elements connect through
+    /// shared edges (a block touching the rest at one vertex would hinge about it).
+    fn check_topology(&self) -> Result<(), MeshError> {
+        let mut seen = std::collections::HashSet::new();
+        for el in &self.elements {
+            let mut key = el.vertices;
+            key.sort_unstable();
+            if !seen.insert(key) {
+                return Err(MeshError::Overlap { block: el.block });
+            }
+        }
+        if let Some(edge) = self.edges.iter().find(|e| e.elements.len() > 2) {
+            let block = self.elements[edge.elements[0].0].block;
+            return Err(MeshError::Overlap { block });
+        }
+        // Flood fill over shared edges from element 0.
+        let mut reached = vec![false; self.elements.len()];
+        let mut stack = vec![0];
+        while let Some(e) = stack.pop() {
+            if std::mem::replace(&mut reached[e], true) {
+                continue;
+            }
+            for &edge in &self.elements[e].edges {
+                stack.extend(self.edges[edge].elements.iter().map(|&(n, _)| n));
+            }
+        }
+        match reached.iter().position(|r| !r) {
+            Some(e) => Err(MeshError::Disconnected {
+                block: self.elements[e].block,
+            }),
+            None => Ok(()),
+        }
     }
 
     fn bounding_size(&self) -> f64 {

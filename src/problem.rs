@@ -283,18 +283,30 @@ impl Problem {
         name: &str,
         key: &str,
     ) -> Result<&'m [(usize, usize)], ProblemError> {
-        mesh.named_edges
-            .get(name)
-            .map(|v| v.as_slice())
-            .ok_or_else(|| {
-                self.error(
-                    key,
-                    format!(
-                        "body \"{}\" has no edge named \"{name}\"",
-                        self.spec.bodies[b].name
-                    ),
-                )
-            })
+        let edges = mesh.named_edges.get(name).ok_or_else(|| {
+            self.error(
+                key,
+                format!(
+                    "body \"{}\" has no edge named \"{name}\"",
+                    self.spec.bodies[b].name
+                ),
+            )
+        })?;
+        // A block side between two blocks is inside the body: loads, supports and contact act
+        // on its boundary only.
+        if edges
+            .iter()
+            .any(|&(e, l)| mesh.edges[mesh.elements[e].edges[l]].elements.len() > 1)
+        {
+            return Err(self.error(
+                key,
+                format!(
+                    "edge \"{name}\" of body \"{}\" lies inside the body (between two blocks); name a boundary edge",
+                    self.spec.bodies[b].name
+                ),
+            ));
+        }
+        Ok(edges.as_slice())
     }
 
     /// The tractions of body `b` as library objects.
