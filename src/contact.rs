@@ -603,6 +603,17 @@ fn plate_modes(
             },
         );
     }
+    // load[0] is the work of the loads on the downward translation: positive when they press
+    // body 1 onto body 2. Otherwise a plate free to move lifts off and no contact exists.
+    if !modes.is_empty() && (load[0].is_nan() || load[0] <= 0.0) {
+        return Err(problem.error(
+            format!("bodies[{b1}].tractions"),
+            format!(
+                "the loads on body 1 do not press it onto body 2 (vertical resultant {:+.4e} N, + = up), so a plate free to move lifts it off",
+                force[1]
+            ),
+        ));
+    }
     let names = modes.iter().map(|m| m.0).collect();
     let phis = modes
         .iter()

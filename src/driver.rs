@@ -74,7 +74,12 @@ pub fn method(problem: &Problem) -> Result<Method, ProblemError> {
             Some(k) if k.is_finite() && k > 0.0 => Ok(Method::Penalty { stiffness: k }),
             other => Err(problem.error(
                 "contact.penalty",
-                format!("method \"penalty\" needs penalty > 0 (MPa/mm), got {other:?}"),
+                match other {
+                    Some(k) => format!("method \"penalty\" needs penalty > 0 (MPa/mm), got {k}"),
+                    None => {
+                        "method \"penalty\" needs penalty > 0 (MPa/mm), which is missing".into()
+                    }
+                },
             )),
         },
         other => Err(problem.error(

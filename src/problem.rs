@@ -17,6 +17,11 @@ pub const MAX_COORDINATE: f64 = 1e6;
 /// Largest modulus or traction accepted, MPa: 1000 times diamond's Young's modulus.
 pub const MAX_STRESS: f64 = 1e9;
 
+/// Whether `value` is finite and at most `limit` in size.
+fn within(value: f64, limit: f64) -> bool {
+    value.is_finite() && value.abs() <= limit
+}
+
 /// A problem-file error: which file, which key, what is wrong.
 #[derive(Debug, thiserror::Error)]
 #[error("{file}: {key}: {message}")]
@@ -57,7 +62,8 @@ impl Problem {
     /// Parse and validate a problem file's text.
     pub fn from_toml(text: &str, file: &str) -> Result<Problem, ProblemError> {
         let spec: ProblemSpec = toml::from_str(text).map_err(|e| {
-            let message = e.message().to_string();
+            // One line per error, whatever the parser's message looks like.
+            let message = e.message().split_whitespace().collect::<Vec<_>>().join(" ");
             let key = match e.span() {
                 Some(span) => format!(
                     "line {}",
@@ -228,7 +234,7 @@ impl Problem {
                 .iter()
                 .flatten()
                 .chain(bs.arcs.iter().flat_map(|a| &a.center));
-            if coordinates.clone().any(|c| !(c.abs() <= MAX_COORDINATE)) {
+            if coordinates.clone().any(|c| !within(*c, MAX_COORDINATE)) {
                 // Beyond this, double precision cannot resolve the elastic displacements.
                 return Err(self.error(
                     key("corners"),
@@ -272,7 +278,19 @@ impl Problem {
                 ],
             });
         }
-        Mesh::build(blocks).map_err(|e| self.error(format!("bodies[{b}].blocks"), e.to_string()))
+        Mesh::build(blocks).map_err(|e| {
+            use crate::mesh::MeshError;
+            let key = match &e {
+                MeshError::BadLines {
+                    block, direction, ..
+                } => format!("bodies[{b}].blocks[{block}].{direction}"),
+                MeshError::Overlap { block }
+                | MeshError::Disconnected { block }
+                | MeshError::Folded { block, .. } => format!("bodies[{b}].blocks[{block}]"),
+                _ => format!("bodies[{b}].blocks"),
+            };
+            self.error(key, e.to_string())
+        })
     }
 
     /// The (element, local edge) list of edge `name` of body `b`.
@@ -335,7 +353,7 @@ impl Problem {
             }
             let (normal, shear) = (t.normal.pair(), t.shear.pair());
             for (name, values) in [("normal", normal), ("shear", shear)] {
-                if values.iter().any(|v| !(v.abs() <= MAX_STRESS)) {
+                if values.iter().any(|v| !within(*v, MAX_STRESS)) {
                     return Err(self.error(
                         key(name),
                         format!("values must be finite and at most {MAX_STRESS:e} MPa in size, got {values:?}"),

@@ -172,6 +172,23 @@ fn broken_contact_plate_and_wear_sections() {
             "wear.extrapolation",
         ),
         ("at = [1070.0, 100.0]", "at = [1070.0, inf]", "probes.M.at"),
+        // Found by fuzzing: each of these used to run to exit 0 with wrong numbers, or panic.
+        (
+            "target_edge = \"surface\"",
+            "target_edge = \"base\"",
+            "contact.target_edge",
+        ),
+        (
+            "normal = 16.666 ",
+            "normal = -16.666 ",
+            "bodies[0].tractions",
+        ),
+        (
+            "normal = 16.666 ",
+            "normal = 1e300 ",
+            "bodies[0].tractions[0].normal",
+        ),
+        ("a = 1.0, b = 1.0 }", "a = 300.0, b = 1.0 }", "wear.body1"),
     ];
     for (k, (from, to, key)) in cases.iter().enumerate() {
         assert!(base.contains(from), "baseline lacks '{from}'");
@@ -184,4 +201,36 @@ fn broken_contact_plate_and_wear_sections() {
         );
         assert!(!err.contains("panicked"), "{err}");
     }
+}
+
+#[test]
+fn overlapping_or_unsupported_bodies() {
+    // A block listed twice doubles the stiffness silently unless the mesh checks for overlap.
+    let base = baseline();
+    let start = base.find("[[bodies.blocks]]").unwrap();
+    let end = start + 1 + base[start + 1..].find("[[bodies.").unwrap();
+    let doubled = format!("{}{}{}", &base[..end], &base[start..end], &base[end..]);
+    expect_error(&doubled, "doubled", &["bodies[0].blocks[1]", "overlaps"]);
+    // The brake shoe has no supports of its own (the plate holds it in contact jobs): an
+    // elastic solve must say so, not return 1e11 mm from round-off pivots of a singular matrix.
+    let brake = wearfem::examples::example("brake").unwrap();
+    let (code, err) = run(brake, "brake");
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("supports") && err.contains("rigid-body"),
+        "{err}"
+    );
+}
+
+#[test]
+fn absurd_step_count_is_refused_not_allocated() {
+    // `--steps` overrides the file and is validated like it: 2⁶⁴ − 1 steps once panicked with
+    // "capacity overflow" while reserving the step records.
+    let base = wearfem::examples::example("punch-b40").unwrap();
+    let (code, err) = run_cli("run", &["--steps", "18446744073709551615"], base, "steps");
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("wear.steps") && !err.contains("panicked"),
+        "{err}"
+    );
 }
