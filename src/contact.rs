@@ -72,6 +72,7 @@ pub struct PlateSpec {
     /// "fixed", "vertical" (λ_F) or "vertical_rotation" (λ_F, λ_M about `pin`).
     pub motion: String,
     /// Pin [x, z] (mm), needed for rotation; moments are taken about it.
+    #[serde(default, deserialize_with = "crate::schema::exact::optional_pair")]
     pub pin: Option<Point>,
 }
 

@@ -44,7 +44,7 @@ pub enum OneOrTwo {
     /// Constant value.
     One(f64),
     /// Values at the lower and upper window bound.
-    Two([f64; 2]),
+    Two(#[serde(deserialize_with = "exact::pair")] [f64; 2]),
 }
 
 impl OneOrTwo {
@@ -77,6 +77,7 @@ pub struct ArcSpec {
     /// Block edge 0..=3 (0: c0→c1, 1: c1→c2, 2: c2→c3, 3: c3→c0).
     pub edge: usize,
     /// Arc centre [x, z], mm.
+    #[serde(deserialize_with = "exact::pair")]
     pub center: Point,
 }
 
@@ -99,6 +100,7 @@ pub struct EdgeNames {
 #[serde(deny_unknown_fields)]
 pub struct BlockSpec {
     /// Four corners [x, z] (mm), counter-clockwise.
+    #[serde(deserialize_with = "exact::corners")]
     pub corners: [Point; 4],
     /// Arc edges (others are straight).
     #[serde(default)]
@@ -121,6 +123,7 @@ pub struct SupportSpec {
     /// Named edge (give `edge` or `point`).
     pub edge: Option<String>,
     /// A mesh vertex [x, z], mm.
+    #[serde(default, deserialize_with = "exact::optional_pair")]
     pub point: Option<Point>,
     /// Components held: any of "x", "z".
     pub fix: Vec<String>,
@@ -131,8 +134,10 @@ pub struct SupportSpec {
 #[serde(deny_unknown_fields)]
 pub struct WindowSpec {
     /// x range, mm.
+    #[serde(default, deserialize_with = "exact::optional_pair")]
     pub x: Option<[f64; 2]>,
     /// z range, mm.
+    #[serde(default, deserialize_with = "exact::optional_pair")]
     pub z: Option<[f64; 2]>,
 }
 
@@ -179,6 +184,7 @@ pub struct ProbeSpec {
     /// Body name.
     pub body: String,
     /// Point [x, z], mm.
+    #[serde(deserialize_with = "exact::pair")]
     pub at: Point,
 }
 
@@ -207,4 +213,49 @@ pub struct ProblemSpec {
     pub plate: Option<crate::contact::PlateSpec>,
     /// Wear settings (see [`crate::wear`]).
     pub wear: Option<crate::wear::WearSpec>,
+}
+
+/// Fixed-length arrays read strictly: the TOML reader fills `[f64; 2]` from the first two
+/// entries of a longer array and drops the rest, so `[x, z, junk]` would pass unnoticed.
+pub mod exact {
+    use serde::de::Error;
+    use serde::{Deserialize, Deserializer};
+
+    fn to_pair<E: Error>(values: &[f64]) -> Result<[f64; 2], E> {
+        match values {
+            [x, z] => Ok([*x, *z]),
+            _ => Err(E::custom(format!(
+                "expected two numbers [x, z], got {} ({values:?})",
+                values.len()
+            ))),
+        }
+    }
+
+    /// Exactly two numbers.
+    pub fn pair<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 2], D::Error> {
+        to_pair(&Vec::<f64>::deserialize(d)?)
+    }
+
+    /// Exactly two numbers, if present.
+    pub fn optional_pair<'de, D: Deserializer<'de>>(d: D) -> Result<Option<[f64; 2]>, D::Error> {
+        Option::<Vec<f64>>::deserialize(d)?
+            .map(|v| to_pair(&v))
+            .transpose()
+    }
+
+    /// Exactly four pairs.
+    pub fn corners<'de, D: Deserializer<'de>>(d: D) -> Result<[[f64; 2]; 4], D::Error> {
+        let corners = Vec::<Vec<f64>>::deserialize(d)?;
+        if corners.len() != 4 {
+            return Err(D::Error::custom(format!(
+                "expected four corners [x, z], got {}",
+                corners.len()
+            )));
+        }
+        let mut out = [[0.0; 2]; 4];
+        for (o, c) in out.iter_mut().zip(&corners) {
+            *o = to_pair(c)?;
+        }
+        Ok(out)
+    }
 }

@@ -234,3 +234,14 @@ fn absurd_step_count_is_refused_not_allocated() {
         "{err}"
     );
 }
+
+#[test]
+fn arrays_of_the_wrong_length() {
+    // The TOML reader fills a two-element array from the first two entries of a longer one;
+    // the schema reads coordinates strictly instead.
+    let base = baseline();
+    let probe = "inner = { body = \"ring\", at = [100.0, 0.0] }";
+    assert!(base.contains(probe));
+    let text = base.replace(probe, "inner = { body = \"ring\", at = [100.0, 0.0, 7.0] }");
+    expect_error(&text, "three", &["expected two numbers"]);
+}
