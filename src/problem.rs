@@ -177,7 +177,8 @@ impl Problem {
             spec,
         };
         for b in 0..problem.spec.bodies.len() {
-            problem.mesh(b)?;
+            let mesh = problem.mesh(b)?;
+            problem.check_traction_windows(b, &mesh)?;
         }
         for (name, probe) in &problem.spec.probes {
             problem.body_index(&probe.body).map_err(|_| {
@@ -327,6 +328,27 @@ impl Problem {
         Ok(edges.as_slice())
     }
 
+    /// Every traction of body `b` must act on some length of its edge: a window that misses
+    /// the edge (or a z window on a horizontal edge) would silently load nothing.
+    fn check_traction_windows(&self, b: usize, mesh: &Mesh) -> Result<(), ProblemError> {
+        for (k, traction) in self.tractions(b)?.iter().enumerate() {
+            let key = format!("bodies[{b}].tractions[{k}]");
+            let edges = self.named_edge(mesh, b, &traction.edge, &format!("{key}.edge"))?;
+            let mut length = 0.0;
+            traction.for_each_point(mesh, edges, 1, 1.0, |_, _, _, _, _, ds| length += ds);
+            if length <= 0.0 && traction.window.is_some() {
+                return Err(self.error(
+                    format!("{key}.window"),
+                    format!(
+                        "does not overlap edge \"{}\": the traction would act nowhere",
+                        traction.edge
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// The tractions of body `b` as library objects.
     pub fn tractions(&self, b: usize) -> Result<Vec<Traction>, ProblemError> {
         let mut out = Vec::new();
@@ -407,6 +429,12 @@ impl Problem {
                         ))
                     }
                 }
+            }
+            if comps.is_empty() {
+                return Err(self.error(
+                    format!("{key}.fix"),
+                    "lists no component: give \"x\", \"z\" or both",
+                ));
             }
             match (&s.edge, s.point) {
                 (Some(edge), None) => {

@@ -245,3 +245,16 @@ fn arrays_of_the_wrong_length() {
     let text = base.replace(probe, "inner = { body = \"ring\", at = [100.0, 0.0, 7.0] }");
     expect_error(&text, "three", &["expected two numbers"]);
 }
+
+#[test]
+fn loads_and_supports_that_act_nowhere() {
+    let base = baseline();
+    let text = base.replacen("fix = [\"z\"]", "fix = []", 1);
+    expect_error(&text, "nofix", &["bodies[0].supports[0].fix"]);
+    // The inner arc runs from (100, 0) to (0, 100): an x window beyond it loads nothing.
+    let text = base.replace(
+        "normal = 100.0",
+        "normal = 100.0\nwindow = { x = [300.0, 400.0] }",
+    );
+    expect_error(&text, "nowhere", &["bodies[0].tractions[0].window"]);
+}
