@@ -158,7 +158,7 @@ pub struct WearHistory {
 }
 
 /// Most steps a run may have (each keeps a record of about 100 bytes).
-pub const MAX_STEPS: usize = 10_000_000;
+pub const MAX_STEPS: usize = 1_000_000;
 /// Largest extrapolation factor k.
 pub const MAX_FACTOR: usize = 1_000_000;
 
