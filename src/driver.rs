@@ -268,7 +268,7 @@ impl WearRun {
             .zip(&h.p_minus)
             .map(|(a, b)| a + b)
             .collect();
-        json!({
+        let mut summary = json!({
             "title": problem.spec.title,
             "points": self.contact.len(),
             "steps": steps,
@@ -283,10 +283,14 @@ impl WearRun {
             "solves": h.solves,
             "failed_solves": h.failed_solves,
             "unconverged_steps": h.unconverged_steps,
-            "stopped_at_step": h.stopped_at,
             "setup_seconds": self.setup_seconds,
             "run_seconds": self.run_seconds,
-        })
+        });
+        if let Some(step) = h.stopped_at {
+            // Only present when the wear overflowed: the run ended before this step.
+            summary["stopped_at_step"] = json!(step);
+        }
+        summary
     }
 }
 
