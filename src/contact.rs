@@ -19,6 +19,9 @@ use crate::quadrature::gauss_lobatto;
 use faer::Mat;
 use serde::Deserialize;
 
+mod plate;
+use plate::plate_modes;
+
 /// `[contact]` section of a problem file.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -524,101 +527,4 @@ impl CondensedContact {
     pub fn is_empty(&self) -> bool {
         self.points.x.is_empty()
     }
-}
-
-type PlateModes = (Vec<Vec<Point>>, Vec<&'static str>, Vec<f64>, (Point, f64));
-
-fn plate_modes(
-    problem: &Problem,
-    b1: usize,
-    body1: &ElasticBody,
-    pl: &PlateSpec,
-    points: &ContactPoints,
-) -> Result<PlateModes, ProblemError> {
-    let plate_edges = problem.named_edge(&body1.mesh, b1, &pl.edge, "plate.edge")?;
-    let pin = match (pl.motion.as_str(), pl.pin) {
-        ("vertical_rotation", None) => {
-            return Err(problem.error("plate.pin", "rotation needs a pin [x, z]"))
-        }
-        (_, Some(p)) if !p.iter().all(|c| c.abs() <= crate::problem::MAX_COORDINATE) => {
-            return Err(problem.error("plate.pin", "must be coordinates [x, z] within ±1e6 mm"))
-        }
-        (_, Some(p)) => p,
-        (_, None) => {
-            // Without a pin, moments are reported about the plate edge's centroid.
-            let (mut sum, mut length) = ([0.0; 2], 0.0);
-            for &(e, l) in plate_edges {
-                for (t, ds) in crate::loads::edge_quadrature(&body1.mesh, e, l, None, 4) {
-                    let x = body1.mesh.point_on_edge(e, l, t);
-                    sum = [sum[0] + x[0] * ds, sum[1] + x[1] * ds];
-                    length += ds;
-                }
-            }
-            [sum[0] / length, sum[1] / length]
-        }
-    };
-    let translation = |_: Point| [0.0, -1.0];
-    let rotation = move |x: Point| [x[1] - pin[1], -(x[0] - pin[0])];
-    type Mode = (&'static str, Box<dyn Fn(Point) -> Point>);
-    let modes: Vec<Mode> = match pl.motion.as_str() {
-        "fixed" => vec![],
-        "vertical" => vec![("lambda_F", Box::new(translation))],
-        "vertical_rotation" => vec![
-            ("lambda_F", Box::new(translation)),
-            ("lambda_M", Box::new(rotation)),
-        ],
-        other => {
-            return Err(problem.error(
-                "plate.motion",
-                format!(
-                    "must be \"fixed\", \"vertical\" or \"vertical_rotation\", got \"{other}\""
-                ),
-            ))
-        }
-    };
-    let mut force = [0.0; 2];
-    let mut moment = 0.0;
-    let mut load = vec![0.0; modes.len()];
-    let t = problem.analysis.thickness();
-    // Every load on body 1 reaches the plate (body 1 is clamped to it): all enter L_k.
-    for (k, tr) in problem.tractions(b1)?.iter().enumerate() {
-        let edges = problem.named_edge(
-            &body1.mesh,
-            b1,
-            &tr.edge,
-            &format!("bodies[{b1}].tractions[{k}].edge"),
-        )?;
-        tr.for_each_point(
-            &body1.mesh,
-            edges,
-            body1.dofs.p,
-            t,
-            |_, _, _, x, trac, w| {
-                force[0] += trac[0] * w;
-                force[1] += trac[1] * w;
-                moment += ((x[1] - pin[1]) * trac[0] - (x[0] - pin[0]) * trac[1]) * w;
-                for (k, (_, phi)) in modes.iter().enumerate() {
-                    let f = phi(x);
-                    load[k] += (trac[0] * f[0] + trac[1] * f[1]) * w;
-                }
-            },
-        );
-    }
-    // load[0] is the work of the loads on the downward translation: positive when they press
-    // body 1 onto body 2. Otherwise a plate free to move lifts off and no contact exists.
-    if !modes.is_empty() && (load[0].is_nan() || load[0] <= 0.0) {
-        return Err(problem.error(
-            format!("bodies[{b1}].tractions"),
-            format!(
-                "the loads on body 1 do not press it onto body 2 (vertical resultant {:+.4e} N, + = up), so a plate free to move lifts it off",
-                force[1]
-            ),
-        ));
-    }
-    let names = modes.iter().map(|m| m.0).collect();
-    let phis = modes
-        .iter()
-        .map(|(_, phi)| points.x.iter().map(|&x| phi(x)).collect())
-        .collect();
-    Ok((phis, names, load, (force, moment)))
 }
