@@ -4,8 +4,33 @@
 mod common;
 use common::{problem, run};
 use wearfem::complementarity::{ContactSolver, Direction, Method};
+use wearfem::contact::CondensedContact;
 use wearfem::driver;
-use wearfem::steady::SteadyStatus;
+use wearfem::steady::{SteadyState, SteadyStatus};
+
+/// The steady shape, given to the ordinary contact solver, must give back p⁺ and p⁻: an
+/// independent check of the combined Newton system. Two exact solves of the same LCP differ
+/// by round-off only, hence 1e-8 of the peak.
+fn assert_shape_reproduces_pressures(state: &SteadyState, contact: &CondensedContact, case: &str) {
+    let gap: Vec<f64> = contact
+        .points
+        .initial_gap
+        .iter()
+        .zip(&state.shape)
+        .map(|(a, g)| a + g)
+        .collect();
+    let peak = state.p_plus.iter().cloned().fold(0.0, f64::max);
+    let mut solver = ContactSolver::new(contact, Method::ActiveSet);
+    for (dir, expected) in [
+        (Direction::Plus, &state.p_plus),
+        (Direction::Minus, &state.p_minus),
+    ] {
+        let (sol, _) = solver.solve(&gap, dir);
+        for (a, e) in sol.pressure.iter().zip(expected.iter()) {
+            assert!((a - e).abs() < 1e-8 * peak, "{case} {dir:?}: {a} vs {e}");
+        }
+    }
+}
 
 #[test]
 fn steady_states_meet_the_summed_pressure_theory() {
@@ -69,25 +94,7 @@ fn steady_shape_reproduces_its_pressures_in_the_contact_solver() {
     // an independent check of the combined Newton system.
     for name in ["punch-b40", "punch-b40-variant2", "brake"] {
         let (state, contact, _) = driver::steady(&problem(name, &[])).unwrap();
-        let gap: Vec<f64> = contact
-            .points
-            .initial_gap
-            .iter()
-            .zip(&state.shape)
-            .map(|(a, b)| a + b)
-            .collect();
-        let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
-        let peak = state.p_plus.iter().cloned().fold(0.0, f64::max);
-        for (dir, expected) in [
-            (Direction::Plus, &state.p_plus),
-            (Direction::Minus, &state.p_minus),
-        ] {
-            let (sol, _) = solver.solve(&gap, dir);
-            for (a, b) in sol.pressure.iter().zip(expected.iter()) {
-                // Two exact solves of the same LCP: round-off.
-                assert!((a - b).abs() < 1e-8 * peak, "{name} {dir:?}: {a} vs {b}");
-            }
-        }
+        assert_shape_reproduces_pressures(&state, &contact, name);
     }
 }
 
@@ -273,23 +280,7 @@ fn steady_state_with_lift_off_is_the_triangle_of_eq_19() {
         "the test must exercise points out of contact throughout"
     );
     // The shape it reports, given to the ordinary contact solver, gives back both pressures.
-    let gap: Vec<f64> = contact
-        .points
-        .initial_gap
-        .iter()
-        .zip(&state.shape)
-        .map(|(a, b)| a + b)
-        .collect();
-    let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
-    for (dir, expected) in [
-        (Direction::Plus, &state.p_plus),
-        (Direction::Minus, &state.p_minus),
-    ] {
-        let (sol, _) = solver.solve(&gap, dir);
-        for (a, b) in sol.pressure.iter().zip(expected.iter()) {
-            assert!((a - b).abs() < 1e-8 * peak, "{dir:?}: {a} vs {b}");
-        }
-    }
+    assert_shape_reproduces_pressures(&state, &contact, "lift-off");
 }
 
 #[test]
@@ -337,23 +328,6 @@ fn steady_state_with_lift_off_for_power_laws() {
                 wear[i]
             );
         }
-        let gap: Vec<f64> = contact
-            .points
-            .initial_gap
-            .iter()
-            .zip(&state.shape)
-            .map(|(a, g)| a + g)
-            .collect();
-        let peak = state.p_plus.iter().cloned().fold(0.0, f64::max);
-        let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
-        for (dir, expected) in [
-            (Direction::Plus, &state.p_plus),
-            (Direction::Minus, &state.p_minus),
-        ] {
-            let (sol, _) = solver.solve(&gap, dir);
-            for (a, e) in sol.pressure.iter().zip(expected.iter()) {
-                assert!((a - e).abs() < 1e-8 * peak, "b = {b} {dir:?}: {a} vs {e}");
-            }
-        }
+        assert_shape_reproduces_pressures(&state, &contact, &format!("b = {b}"));
     }
 }
