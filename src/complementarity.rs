@@ -63,11 +63,11 @@ impl Direction {
             Direction::Minus => Direction::Plus,
         }
     }
-    /// "+" or "-".
+    /// "+" or "−" (U+2212, the minus sign of the issue and the paper).
     pub fn symbol(self) -> &'static str {
         match self {
             Direction::Plus => "+",
-            Direction::Minus => "-",
+            Direction::Minus => "−",
         }
     }
     fn index(self) -> usize {

@@ -102,7 +102,7 @@ pub struct Snapshot {
     pub step: usize,
     /// Half periods done at the end of the step.
     pub half_period: usize,
-    /// "+" or "-".
+    /// "+" or "−".
     pub direction: &'static str,
     /// Pressure at the end of the step, MPa.
     pub pressure: Vec<f64>,
@@ -117,7 +117,7 @@ pub struct StepRecord {
     pub step: usize,
     /// Half periods done at the end of the step (paper eq. 30).
     pub half_period: usize,
-    /// "+" or "-".
+    /// "+" or "−".
     pub direction: &'static str,
     /// Extrapolation factor k.
     pub k: usize,

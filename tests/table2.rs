@@ -164,7 +164,7 @@ fn wear_dissipation_decreases_towards_its_minimum() {
         .history
         .steps
         .iter()
-        .filter(|s| s.direction == "-")
+        .filter(|s| s.direction == "−")
         .map(|s| s.dissipation)
         .collect();
     let sampled: Vec<f64> = minus.iter().step_by(50).cloned().collect();

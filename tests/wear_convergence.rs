@@ -107,5 +107,5 @@ fn run_starts_in_the_problems_sliding_direction() {
         Some(4),
     );
     let directions: Vec<&str> = r.history.steps.iter().map(|s| s.direction).collect();
-    assert_eq!(directions, ["-", "+", "-", "+"]);
+    assert_eq!(directions, ["−", "+", "−", "+"]);
 }
