@@ -10,11 +10,15 @@ use wearfem::driver;
 use wearfem::problem::Problem;
 
 fn main() {
-    let p = Problem::from_toml(
-        wearfem::examples::example("punch-b40").unwrap(),
-        "punch-b40",
-    )
-    .unwrap();
+    // An optional problem file (for the cost-growth table); punch-b40 by default.
+    let p = match std::env::args().nth(1) {
+        Some(path) => Problem::from_toml(&std::fs::read_to_string(&path).unwrap(), &path).unwrap(),
+        None => Problem::from_toml(
+            wearfem::examples::example("punch-b40").unwrap(),
+            "punch-b40",
+        )
+        .unwrap(),
+    };
     let t = Instant::now();
     let (b1, b2) = CondensedContact::bodies(&p).unwrap();
     let bodies = t.elapsed().as_secs_f64();
