@@ -125,6 +125,46 @@ struct Cached {
     valid: bool,
 }
 
+impl Cached {
+    fn empty() -> Cached {
+        Cached {
+            active: vec![],
+            lu: DenseLu::default(),
+            valid: false,
+        }
+    }
+}
+
+/// The all-active reduced system of one direction, factorised on first use.
+enum Full {
+    Unknown,
+    Singular,
+    Ready(DenseLu),
+}
+
+/// The factorisations that belong to one diagonal compliance (see
+/// [`ContactSolver::set_compliance`]): per direction the last active set's and the
+/// all-active one.
+struct Factors {
+    compliance: Vec<f64>,
+    cache: [Cached; 2],
+    full: [Full; 2],
+}
+
+impl Factors {
+    fn new(compliance: &[f64]) -> Factors {
+        Factors {
+            compliance: compliance.to_vec(),
+            cache: [Cached::empty(), Cached::empty()],
+            full: [Full::Unknown, Full::Unknown],
+        }
+    }
+}
+
+/// How many compliances keep their factorisations: enough for the extrapolation factors of
+/// a schedule (the paper's has three, an adaptive one climbs a ladder of powers of two).
+const KEPT_COMPLIANCES: usize = 12;
+
 /// Build and factorise the reduced system [A_II R_I; E_I 0] of the points `index` into `lu`;
 /// false if it is singular.
 fn reduced_system(
@@ -161,8 +201,11 @@ pub struct ContactSolver {
     n: usize,
     m: usize,
     method: Method,
-    /// A_s per direction (with the penalty compliance on the diagonal), row-major N × N.
+    /// A_s per direction (with the penalty compliance and the current diagonal compliance on
+    /// the diagonal), row-major N × N.
     a: [Vec<f64>; 2],
+    /// The diagonal of A_s with the penalty compliance only, per direction.
+    base_diagonal: [Vec<f64>; 2],
     /// E per direction, row-major m × N.
     e: [Vec<f64>; 2],
     /// R, row-major N × m.
@@ -172,10 +215,8 @@ pub struct ContactSolver {
     gap_to_pressure: Vec<f64>,
     penalty_compliance: Vec<f64>,
     area: Vec<f64>,
-    cache: [Cached; 2],
-    /// The all-active reduced systems, factorised once at set-up: every cold start begins
-    /// with them. `None` where singular.
-    full: [Option<DenseLu>; 2],
+    /// Factorisations per diagonal compliance, the current one first.
+    factors: Vec<Factors>,
     rhs: Vec<f64>,
     scratch: Vec<f64>,
     index: Vec<usize>,
@@ -184,7 +225,8 @@ pub struct ContactSolver {
 }
 
 impl ContactSolver {
-    /// Prepare the solver: the two direction-dependent matrices are formed once.
+    /// Prepare the solver: the two direction-dependent matrices are formed once; the
+    /// factorisations are made on first use and kept.
     pub fn new(contact: &CondensedContact, method: Method) -> ContactSolver {
         let n = contact.len();
         let m = contact.rigid_modes.len();
@@ -200,51 +242,32 @@ impl ContactSolver {
             }
             a
         };
-        let r = contact.rigid_gap_matrix();
+        let a = [make_a(1.0), make_a(-1.0)];
+        let base_diagonal = [0, 1].map(|d| (0..n).map(|i| a[d][i * n + i]).collect());
         let gap_to_pressure = (0..n)
             .map(|i| 1.0 / (contact.a_nn[i * n + i] * area[i]))
             .collect();
-        let cached = || Cached {
-            active: vec![],
-            lu: DenseLu::default(),
-            valid: false,
-        };
-        let mut solver = ContactSolver {
+        ContactSolver {
             n,
             m,
             method,
-            a: [make_a(1.0), make_a(-1.0)],
+            a,
+            base_diagonal,
             e: [
                 contact.equilibrium_matrix(1.0),
                 contact.equilibrium_matrix(-1.0),
             ],
-            r,
+            r: contact.rigid_gap_matrix(),
             load: contact.plate_load.clone(),
             gap_to_pressure,
             penalty_compliance,
             area,
-            cache: [cached(), cached()],
-            full: [None, None],
+            factors: vec![Factors::new(&vec![0.0; n])],
             rhs: Vec::with_capacity(n + m),
             scratch: vec![0.0; n + m],
             index: Vec::with_capacity(n),
             max_iterations: 30 + n,
-        };
-        let all: Vec<usize> = (0..n).collect();
-        for dir in 0..2 {
-            let mut lu = DenseLu::default();
-            if reduced_system(
-                &mut lu,
-                &solver.a[dir],
-                &solver.e[dir],
-                &solver.r,
-                &all,
-                (n, m),
-            ) {
-                solver.full[dir] = Some(lu);
-            }
         }
-        solver
     }
 
     /// Number of contact points.
@@ -254,15 +277,43 @@ impl ContactSolver {
 
     /// Forget the warm-start active sets and factorisations (the next solve is a cold start).
     pub fn reset(&mut self) {
-        for c in self.cache.iter_mut() {
-            c.active.clear();
-            c.valid = false;
+        for f in self.factors.iter_mut() {
+            for c in f.cache.iter_mut() {
+                c.active.clear();
+                c.valid = false;
+            }
         }
     }
 
     /// Whether the problem has no contact points.
     pub fn is_empty(&self) -> bool {
         self.n == 0
+    }
+
+    /// Add the diagonal compliance `compliance` (mm/N, one per point, ≥ 0) to A_s, so that the
+    /// solve becomes d = (A_s + diag c) P + R λ + g. The wear step uses it: wear that is
+    /// linear in the pressure, Δg_i = c_i P_i, is a compliance in series with the bodies'.
+    /// The gap `d` returned then includes that wear. The factorisations of the last few
+    /// compliances are kept, so that switching back and forth refactorises nothing.
+    pub fn set_compliance(&mut self, compliance: &[f64]) {
+        assert_eq!(compliance.len(), self.n, "one compliance per contact point");
+        if self.factors[0].compliance == compliance {
+            return;
+        }
+        let slot = match self.factors.iter().position(|f| f.compliance == compliance) {
+            Some(k) => self.factors.remove(k),
+            None => {
+                self.factors.truncate(KEPT_COMPLIANCES - 1);
+                Factors::new(compliance)
+            }
+        };
+        self.factors.insert(0, slot);
+        let n = self.n;
+        for (a, base) in self.a.iter_mut().zip(&self.base_diagonal) {
+            for i in 0..n {
+                a[i * n + i] = base[i] + compliance[i];
+            }
+        }
     }
 
     /// Solve for initial gap `gap` (mm, one per point) in sliding direction `direction`,
@@ -292,7 +343,7 @@ impl ContactSolver {
         } else {
             self.lemke_solve(gap, direction, out, &mut info);
         }
-        self.finish(gap, direction, out, &mut info);
+        self.finish(direction, out, &mut info);
         info
     }
 
@@ -301,6 +352,24 @@ impl ContactSolver {
         let mut out = ContactSolution::default();
         let info = self.solve_into(gap, direction, &mut out);
         (out, info)
+    }
+
+    /// Make sure the all-active system of `dir` is factorised; whether it is regular.
+    fn full_ready(&mut self, dir: usize) -> bool {
+        if let Full::Unknown = self.factors[0].full[dir] {
+            let all: Vec<usize> = (0..self.n).collect();
+            let mut lu = DenseLu::default();
+            let ok = reduced_system(
+                &mut lu,
+                &self.a[dir],
+                &self.e[dir],
+                &self.r,
+                &all,
+                (self.n, self.m),
+            );
+            self.factors[0].full[dir] = if ok { Full::Ready(lu) } else { Full::Singular };
+        }
+        matches!(self.factors[0].full[dir], Full::Ready(_))
     }
 
     fn active_set(
@@ -312,20 +381,22 @@ impl ContactSolver {
     ) -> bool {
         let (n, m) = (self.n, self.m);
         let dir = direction.index();
-        if self.cache[dir].active.len() != n {
-            self.cache[dir].active = vec![true; n];
-            self.cache[dir].valid = false;
+        if self.factors[0].cache[dir].active.len() != n {
+            self.factors[0].cache[dir].active = vec![true; n];
+            self.factors[0].cache[dir].valid = false;
         }
-        out.active.copy_from_slice(&self.cache[dir].active);
+        out.active
+            .copy_from_slice(&self.factors[0].cache[dir].active);
         for _ in 0..self.max_iterations {
             info.iterations += 1;
-            let all_active = out.active.iter().all(|&a| a) && self.full[dir].is_some();
-            if !all_active && (!self.cache[dir].valid || self.cache[dir].active != out.active) {
+            let all_active = out.active.iter().all(|&a| a) && self.full_ready(dir);
+            let cached = &self.factors[0].cache[dir];
+            if !all_active && (!cached.valid || cached.active != out.active) {
                 let active = std::mem::take(&mut out.active);
                 self.factorise(dir, &active);
                 out.active = active;
                 info.factorisations += 1;
-                if !self.cache[dir].valid {
+                if !self.factors[0].cache[dir].valid {
                     return false;
                 }
             }
@@ -336,9 +407,10 @@ impl ContactSolver {
             self.rhs.extend(self.index.iter().map(|&i| -gap[i]));
             self.rhs.extend(self.load.iter().map(|l| -l));
             let size = self.index.len() + m;
-            let lu = match &self.full[dir] {
-                Some(full) if all_active => full,
-                _ => &self.cache[dir].lu,
+            let factors = &self.factors[0];
+            let lu = match &factors.full[dir] {
+                Full::Ready(full) if all_active => full,
+                _ => &factors.cache[dir].lu,
             };
             lu.solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
             if self.rhs.iter().any(|v| !v.is_finite()) {
@@ -350,26 +422,13 @@ impl ContactSolver {
             }
             out.rigid.copy_from_slice(&self.rhs[self.index.len()..size]);
             self.compute_gap(gap, dir, out);
-            let force_scale = out.force.iter().fold(0.0f64, |a, f| a.max(f.abs()));
-            let mut changed = false;
-            for i in 0..n {
-                // Keep a point whose force is not negative; add one that penetrates (the gap is
-                // compared as a force, d/A_ii, so that both tests share one scale).
-                let tolerance = 1e-13 * force_scale.max(1e-300);
-                let now = if out.active[i] {
-                    out.force[i] >= -tolerance
-                } else {
-                    out.gap[i] * self.gap_to_pressure[i] * self.area[i] < -tolerance
-                };
-                changed |= now != out.active[i];
-                out.active[i] = now;
-            }
-            if !changed {
-                self.cache[dir].active.copy_from_slice(&out.active);
+            if !self.update_active(out) {
+                let cache = &mut self.factors[0].cache[dir];
+                cache.active.copy_from_slice(&out.active);
                 // The cached factorisation belongs to the set it was built for; when the
                 // all-active system was used instead, it no longer matches `active`.
                 if all_active {
-                    self.cache[dir].valid = false;
+                    cache.valid = false;
                 }
                 return true;
             }
@@ -377,11 +436,30 @@ impl ContactSolver {
         false
     }
 
+    /// One active-set update: keep a point whose force is not negative, add one that
+    /// penetrates (the gap is compared as a force, d/A_ii, so that both tests share one
+    /// scale). Whether the set changed.
+    fn update_active(&self, out: &mut ContactSolution) -> bool {
+        let force_scale = out.force.iter().fold(0.0f64, |a, f| a.max(f.abs()));
+        let tolerance = 1e-13 * force_scale.max(1e-300);
+        let mut changed = false;
+        for i in 0..self.n {
+            let now = if out.active[i] {
+                out.force[i] >= -tolerance
+            } else {
+                out.gap[i] * self.gap_to_pressure[i] * self.area[i] < -tolerance
+            };
+            changed |= now != out.active[i];
+            out.active[i] = now;
+        }
+        changed
+    }
+
     /// Build and factorise the reduced system [A_AA R_A; E_A 0] for active set `active`.
     fn factorise(&mut self, dir: usize, active: &[bool]) {
         self.index.clear();
         self.index.extend((0..self.n).filter(|&i| active[i]));
-        let cache = &mut self.cache[dir];
+        let cache = &mut self.factors[0].cache[dir];
         cache.valid = reduced_system(
             &mut cache.lu,
             &self.a[dir],
@@ -450,23 +528,17 @@ impl ContactSolver {
                 for i in 0..n {
                     out.active[i] = out.force[i] > 0.0;
                 }
-                self.cache[dir].active.clear();
-                self.cache[dir].active.extend_from_slice(&out.active);
-                self.cache[dir].valid = false;
+                let cache = &mut self.factors[0].cache[dir];
+                cache.active.clear();
+                cache.active.extend_from_slice(&out.active);
+                cache.valid = false;
             }
             Err(_) => info.status = Status::Failed,
         }
         self.compute_gap(gap, dir, out);
     }
 
-    fn finish(
-        &self,
-        gap: &[f64],
-        direction: Direction,
-        out: &mut ContactSolution,
-        info: &mut SolveInfo,
-    ) {
-        let _ = gap;
+    fn finish(&self, direction: Direction, out: &mut ContactSolution, info: &mut SolveInfo) {
         let (n, m) = (self.n, self.m);
         for i in 0..n {
             out.pressure[i] = out.force[i] / self.area[i];

@@ -283,12 +283,20 @@ impl WearRun {
             "solves": h.solves,
             "failed_solves": h.failed_solves,
             "unconverged_steps": h.unconverged_steps,
+            "oscillating_steps": h.oscillating_steps,
+            "steady_distance": {
+                "wear": number(h.steady_distance.wear),
+                "delta_w": number(h.steady_distance.delta_w),
+                "summed_pressure": number(h.steady_distance.summed_pressure),
+            },
+            "steady_reached": h.steady_distance.wear <= crate::wear::STEADY_REPORT_LIMIT,
             "setup_seconds": self.setup_seconds,
             "run_seconds": self.run_seconds,
         });
-        if let Some(step) = h.stopped_at {
-            // Only present when the wear overflowed: the run ended before this step.
+        if let Some((step, reason)) = &h.stopped {
+            // Only present when the run ended early: at this step, for this reason.
             summary["stopped_at_step"] = json!(step);
+            summary["stop_reason"] = json!(reason.to_string());
         }
         summary
     }

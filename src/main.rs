@@ -162,11 +162,24 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 None => vec!["no steps".to_string()],
             };
             println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '{first}' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
-            if let Some(step) = h.stopped_at {
-                return Err(Failure::Compute(format!("the wear increment of step {step} is not finite (β̃, the exponents or the load are far out of range); the run stopped there and the steps before it were written to {}", out.display())));
+            let d = &h.steady_distance;
+            let verdict = if d.wear <= wearfem::wear::STEADY_REPORT_LIMIT {
+                "at the steady state"
+            } else {
+                "NOT yet at the steady state: run longer, or use `wearfem steady`"
+            };
+            println!("last cycle: wear per period rigid to {:.2e} (relative), δw = {:.3e} mm, p⁺ + p⁻ spread {:.2} %: {verdict}", d.wear, d.delta_w, 100.0 * d.summed_pressure);
+            match &h.stopped {
+                Some((step, wearfem::wear::StopReason::SteadyState)) => {
+                    println!("adaptive schedule: steady state reached at step {step}");
+                }
+                Some((step, reason)) => {
+                    return Err(Failure::Compute(format!("step {step}: {reason}; the run stopped there, and the {} steps before it were written to {} (nothing from step {step})", step - 1, out.display())));
+                }
+                None => {}
             }
-            if h.failed_solves > 0 || h.unconverged_steps > 0 {
-                return Err(Failure::Compute(format!("{} contact solves failed and {} steps missed the implicit criterion (wear.criterion); results kept in {}", h.failed_solves, h.unconverged_steps, out.display())));
+            if h.unconverged_steps > 0 || h.oscillating_steps > 0 {
+                return Err(Failure::Compute(format!("{} steps missed their iteration tolerance (wear.tolerance) and {} fixed-point steps kept a shape whose pressure wears it differently by more than {} % (the shape oscillates; use wear.scheme = \"implicit\"); results kept in {}", h.unconverged_steps, h.oscillating_steps, 100.0 * wearfem::wear::OSCILLATION_LIMIT, out.display())));
             }
         }
         Command::Steady { problem, out } => {

@@ -12,7 +12,11 @@ use crate::complementarity::Direction;
 pub use crate::kinematics::ScheduleEntry;
 use crate::kinematics::{half_period_sliding, paper_schedule};
 
+mod adaptive;
+mod outcome;
 mod step;
+pub use adaptive::AdaptiveSpec;
+pub use outcome::{non_rigid_part, steady_distance, SteadyDistance, StopReason};
 use serde::{Deserialize, Serialize};
 
 /// Wear law parameters of one body: ẇ = β̃ pᵇ vᵃ (mm/s with p in MPa and v in mm/s).
@@ -60,7 +64,18 @@ pub struct WearSpec {
     pub steps: usize,
     /// Extrapolation schedule (default: the paper's k = 1, 5, 10 after steps 50, 100).
     pub extrapolation: Option<Vec<ScheduleEntry>>,
-    /// Criterion eq. 27, percent (default 0.01).
+    /// Error-controlled extrapolation instead of a schedule; the run then stops at the steady
+    /// state (or after `steps`).
+    pub adaptive: Option<AdaptiveSpec>,
+    /// How a half-period step is solved: "implicit" (default: the backward-Euler step
+    /// g⁺ = g + k ΔW(p⁺) solved as one complementarity problem, or by Newton's method for
+    /// b ≠ 1; stable on any mesh and for any k) or "fixed_point" (the paper's iteration
+    /// shape ← wear of the last pressure, checked by `criterion`; for reproducing the paper).
+    #[serde(default = "implicit")]
+    pub scheme: String,
+    /// Tolerance of the step's iteration, percent (default 0.01): criterion eq. 27 (or the
+    /// pointwise one) for the fixed-point scheme; for the implicit scheme with b ≠ 1 the
+    /// largest error of the linearised wear at any point, relative to the largest wear.
     #[serde(default = "default_tolerance")]
     pub tolerance: f64,
     /// "eq27" (default): the paper's integral criterion; "pointwise": the largest change of the
@@ -82,6 +97,9 @@ pub struct WearSpec {
     pub record: Vec<usize>,
 }
 
+fn implicit() -> String {
+    "implicit".into()
+}
 fn reciprocating() -> String {
     "reciprocating".into()
 }
@@ -121,7 +139,7 @@ pub struct StepRecord {
     pub direction: &'static str,
     /// Extrapolation factor k.
     pub k: usize,
-    /// Implicit iterations j.
+    /// Iterations of the step (1 for the implicit scheme with b = 1).
     pub iterations: usize,
     /// Contact solves in this step.
     pub solves: usize,
@@ -150,13 +168,28 @@ pub struct WearHistory {
     pub shape: Vec<f64>,
     /// Total contact solves.
     pub solves: usize,
-    /// Steps whose implicit iteration did not meet the criterion.
+    /// Steps whose iteration did not meet its tolerance.
     pub unconverged_steps: usize,
-    /// Contact solves that failed (the last iterate was kept).
+    /// Fixed-point steps whose accepted wear differs from the wear of the pressure it
+    /// produced by more than [`OSCILLATION_LIMIT`] at some point (the shape oscillates).
+    pub oscillating_steps: usize,
+    /// Contact solves that failed (the run stops at the first).
     pub failed_solves: usize,
-    /// The step at which the wear stopped being finite, if it did; the run ended before it.
-    pub stopped_at: Option<usize>,
+    /// The step at which the run stopped early and why: nothing of that step is kept, except
+    /// for [`StopReason::SteadyState`], where the step is the last one recorded.
+    pub stopped: Option<(usize, StopReason)>,
+    /// How far the last full cycle is from the steady state.
+    pub steady_distance: SteadyDistance,
 }
+
+/// Largest pointwise difference, relative to the largest wear, between the wear a
+/// fixed-point step applied and the wear of the pressure that wear produced, above which the
+/// step counts as oscillating: the pressures then belong to a shape other than the one kept.
+pub const OSCILLATION_LIMIT: f64 = 0.01;
+
+/// Relative distance from the steady state ([`SteadyDistance::wear`]) up to which a run's
+/// last cycle counts as steady in its report.
+pub const STEADY_REPORT_LIMIT: f64 = 0.01;
 
 /// Most steps a run may have (each keeps a record of about 100 bytes).
 pub const MAX_STEPS: usize = 1_000_000;
@@ -273,6 +306,32 @@ impl WearIntegrator {
                 "substeps",
                 format!("must be 0 … 10000, got {}", spec.substeps),
             );
+        }
+        if spec.scheme != "implicit" && spec.scheme != "fixed_point" {
+            return bad(
+                "scheme",
+                format!(
+                    "must be \"implicit\" or \"fixed_point\", got \"{}\"",
+                    spec.scheme
+                ),
+            );
+        }
+        if let Some(adaptive) = &spec.adaptive {
+            if spec.extrapolation.is_some() {
+                return bad(
+                    "adaptive",
+                    "give either an extrapolation schedule or [wear.adaptive], not both".into(),
+                );
+            }
+            if spec.substeps > 0 || spec.scheme != "implicit" {
+                return bad(
+                    "adaptive",
+                    "the adaptive schedule needs the implicit scheme (scheme = \"implicit\", substeps = 0)".into(),
+                );
+            }
+            adaptive
+                .validate()
+                .map_err(|(k, m)| (format!("wear.adaptive.{k}"), m))?;
         }
         let schedule = spec.extrapolation.clone().unwrap_or_else(paper_schedule);
         if schedule.is_empty() || schedule.iter().any(|e| !(1..=MAX_FACTOR).contains(&e.k)) {

@@ -2,7 +2,11 @@
 //! iterated to criterion eq. 27, with Aitken relaxation), plain explicit sub-stepping for
 //! checks, the histories, and the shift of the shape to zero at a chosen point.
 
-use super::{Snapshot, StepRecord, WearHistory, WearIntegrator};
+use super::adaptive::Controller;
+use super::{
+    non_rigid_part, steady_distance, Snapshot, SteadyDistance, StepRecord, StopReason, WearHistory,
+    WearIntegrator, OSCILLATION_LIMIT,
+};
 use crate::complementarity::{ContactSolution, ContactSolver, Direction, SolveInfo, Status};
 use crate::contact::{CondensedContact, ContactPoints};
 use crate::kinematics::{factor, partial_sliding};
@@ -10,6 +14,10 @@ use crate::kinematics::{factor, partial_sliding};
 impl WearIntegrator {
     /// Run the integration from shape `initial` (mm), reporting probes at `probe_points`
     /// (indices into the contact points). `on_step` sees every record as it is made.
+    ///
+    /// The run stops at the first failed contact solve, keeping everything up to the step
+    /// before (nothing from the failed solve is recorded); with [`super::AdaptiveSpec`] it
+    /// also stops once the steady state is reached.
     pub fn run(
         &self,
         solver: &mut ContactSolver,
@@ -22,26 +30,32 @@ impl WearIntegrator {
         let n = points.x.len();
         let mut ws = Workspace::new(n);
         ws.weight.copy_from_slice(&points.weight);
+        ws.area = contact.areas();
         ws.sliding = self.laws.iter().map(|l| self.sliding(l.a)).collect();
+        let rigid = contact.rigid_gap_matrix();
+        let m = contact.rigid_modes.len();
         let mut shape = initial.to_vec();
         ws.last_shape.copy_from_slice(&shape);
         let mut cycle_wear = vec![0.0; n];
         let mut hist = WearHistory {
-            steps: Vec::with_capacity(self.spec.steps),
+            steps: Vec::with_capacity(self.spec.steps.min(100_000)),
             snapshots: vec![],
             p_plus: vec![0.0; n],
             p_minus: vec![0.0; n],
             shape: vec![],
             solves: 0,
             unconverged_steps: 0,
+            oscillating_steps: 0,
             failed_solves: 0,
-            stopped_at: None,
+            stopped: None,
+            steady_distance: SteadyDistance::default(),
         };
         let monotonic = self.is_monotonic();
         let zero_at = self
             .spec
             .shape_zero_at
             .map(|x0| interpolation_weights(points, x0));
+        let mut controller = self.spec.adaptive.map(Controller::new);
         let mut half_periods = 0;
         for step in 1..=self.spec.steps {
             // Odd steps slide in the first direction (contact.direction), even ones back.
@@ -51,29 +65,38 @@ impl WearIntegrator {
             } else {
                 self.first_direction.reversed()
             };
-            let k = factor(&self.schedule, step);
-            half_periods += k;
-            let mut count = SolveCount::default();
-            let (iterations, criterion) = if self.spec.substeps > 0 {
-                let iterations =
-                    self.explicit_step(solver, &mut shape, direction, k, &mut ws, &mut count);
-                (iterations, 0.0)
-            } else {
-                let (iterations, criterion, converged) =
-                    self.implicit_step(solver, &mut shape, direction, k, &mut ws, &mut count);
-                hist.unconverged_steps += usize::from(!converged);
-                (iterations, criterion)
+            let k = match &controller {
+                Some(c) => c.factor,
+                None => factor(&self.schedule, step),
             };
+            let mut count = SolveCount::default();
+            ws.previous_increment.copy_from_slice(&ws.increment);
+            let outcome = self.step(solver, &mut shape, direction, k, &mut ws, &mut count);
             hist.solves += count.solves;
             hist.failed_solves += count.failed;
+            if let Some(failure) = count.first_failure {
+                // Nothing of this step is kept: its pressures and wear came from a failed solve.
+                hist.stopped = Some((
+                    step,
+                    StopReason::FailedSolve {
+                        complementarity: failure.complementarity,
+                        equilibrium: failure.equilibrium,
+                    },
+                ));
+                shape.copy_from_slice(&ws.last_shape);
+                break;
+            }
             if !(shape.iter().all(|g| g.is_finite()) && ws.increment.iter().all(|w| w.is_finite()))
             {
                 // Wear too large for the arithmetic (β̃ or the load far out of range): stop with
                 // what was computed so far rather than write infinities.
-                hist.stopped_at = Some(step);
+                hist.stopped = Some((step, StopReason::NonFiniteWear));
                 shape.copy_from_slice(&ws.last_shape);
                 break;
             }
+            hist.unconverged_steps += usize::from(!outcome.converged);
+            hist.oscillating_steps += usize::from(outcome.oscillating);
+            half_periods += k;
             ws.last_shape.copy_from_slice(&shape);
             let (pressure, increment) = (&ws.solution.pressure, &ws.increment);
             let dissipation: f64 = (0..n)
@@ -85,7 +108,15 @@ impl WearIntegrator {
             } else {
                 hist.p_minus.copy_from_slice(pressure);
             }
+            if let Some(c) = controller.as_mut() {
+                if step == 1 {
+                    c.set_scale(elastic_approach(contact, &ws.solution.force));
+                } else {
+                    c.record(local_error(&ws, k, &rigid, m));
+                }
+            }
             let mut delta_w = 0.0;
+            let mut steady_now = false;
             if first_half && !monotonic {
                 cycle_wear.copy_from_slice(increment);
             } else {
@@ -93,10 +124,18 @@ impl WearIntegrator {
                 for i in 0..n {
                     cycle_wear[i] = increment[i] + if monotonic { 0.0 } else { cycle_wear[i] };
                 }
-                let min = cycle_wear.iter().cloned().fold(f64::INFINITY, f64::min);
-                delta_w = cycle_wear.iter().map(|w| w - min).fold(0.0, f64::max);
+                let minus: &[f64] = if monotonic { &[] } else { &hist.p_minus };
+                let distance =
+                    steady_distance(&cycle_wear, &hist.p_plus, minus, &rigid, m, &points.weight);
+                hist.steady_distance = distance;
+                delta_w = distance.delta_w;
                 if let Some(weights) = &zero_at {
                     shift_to_zero(&mut shape, weights, points);
+                    ws.last_shape.copy_from_slice(&shape);
+                }
+                if let Some(c) = controller.as_mut() {
+                    steady_now = step > 2 && c.is_steady(distance.wear);
+                    c.end_cycle();
                 }
             }
             let record = StepRecord {
@@ -104,16 +143,16 @@ impl WearIntegrator {
                 half_period: half_periods,
                 direction: direction.symbol(),
                 k,
-                iterations,
+                iterations: outcome.iterations,
                 solves: count.solves,
-                criterion,
+                criterion: outcome.criterion,
                 dissipation,
                 probes: probe_points.iter().map(|&i| pressure[i]).collect(),
                 delta_w,
             };
             on_step(&record);
             hist.steps.push(record);
-            if self.spec.record.contains(&step) {
+            if self.spec.record.contains(&step) || steady_now {
                 hist.snapshots.push(Snapshot {
                     step,
                     half_period: half_periods,
@@ -122,9 +161,41 @@ impl WearIntegrator {
                     shape: shape.clone(),
                 });
             }
+            if steady_now {
+                hist.stopped = Some((step, StopReason::SteadyState));
+                break;
+            }
         }
         hist.shape = shape;
         hist
+    }
+
+    /// One step by the scheme the spec names. Leaves in `ws.increment` the wear of one half
+    /// period and in `ws.solution` the contact solution it was computed from.
+    fn step(
+        &self,
+        solver: &mut ContactSolver,
+        shape: &mut [f64],
+        direction: Direction,
+        k: usize,
+        ws: &mut Workspace,
+        count: &mut SolveCount,
+    ) -> StepOutcome {
+        if self.spec.substeps > 0 {
+            solver.set_compliance(&ws.zero);
+            let iterations = self.explicit_step(solver, shape, direction, k, ws, count);
+            StepOutcome {
+                iterations,
+                criterion: 0.0,
+                converged: true,
+                oscillating: false,
+            }
+        } else if self.spec.scheme == "fixed_point" {
+            solver.set_compliance(&ws.zero);
+            self.fixed_point_step(solver, shape, direction, k, ws, count)
+        } else {
+            self.implicit_step(solver, shape, direction, k, ws, count)
+        }
     }
 
     /// One step of plain explicit stepping: `substeps` sub-steps per half period, each with the
@@ -176,10 +247,19 @@ impl WearIntegrator {
         m
     }
 
-    /// One step of the paper's half-period scheme (eq. 24–30): the wear of k half periods at
-    /// the pressure of the end of the step, iterated until the criterion holds. Leaves in
-    /// `ws.increment` the wear of one half period and in `ws.solution` the contact solution
-    /// it was computed from. Returns (iterations, last criterion in %, converged).
+    /// One backward-Euler step g⁺ = g + k ΔW(p⁺) solved directly.
+    ///
+    /// With ΔW(p) = Σ_l c_l pᵇˡ (c_l = β̃_l ∫|v|ᵃ dτ over one half period) and P = p w t, the
+    /// end-of-step gap is d = A_s P + R λ + g + k ΔW(P/(w t)). For b = 1 the wear term is the
+    /// diagonal compliance k Σ c_l/(w_i t) in series with the flexibility, so the step is one
+    /// complementarity problem of the contact solve's own form, with the better-conditioned
+    /// matrix A_s + diag(k Σ c_l/(w t)): exact, with no iteration and no step-size limit.
+    /// For b ≠ 1 Newton's method linearises ΔW at the last pressure p̂,
+    /// ΔW(p) ≈ ΔW(p̂) + s (p − p̂), and solves that complementarity problem until the
+    /// linearisation error is below the tolerance at every point. The slope s is the tangent
+    /// for b > 1 and the secant ΔW(p̂)/p̂ for b < 1 (a tangent that grows without bound near
+    /// p = 0 would overshoot to negative pressures); at p̂ = 0 it is the secant to the mean
+    /// contact pressure (b < 1) or zero (b > 1).
     fn implicit_step(
         &self,
         solver: &mut ContactSolver,
@@ -188,7 +268,121 @@ impl WearIntegrator {
         k: usize,
         ws: &mut Workspace,
         count: &mut SolveCount,
-    ) -> (usize, f64, bool) {
+    ) -> StepOutcome {
+        let n = shape.len();
+        let kf = k as f64;
+        let linear = self.laws.iter().all(|l| l.b == 1.0);
+        if linear {
+            let c: f64 = self
+                .laws
+                .iter()
+                .zip(&ws.sliding)
+                .map(|(l, s)| l.beta * s)
+                .sum();
+            for i in 0..n {
+                ws.compliance[i] = kf * c / ws.area[i];
+            }
+            solver.set_compliance(&ws.compliance);
+            count.track(solver.solve_into(shape, direction, &mut ws.solution));
+            self.apply_wear(shape, kf, ws);
+            return StepOutcome {
+                iterations: 1,
+                criterion: 0.0,
+                converged: true,
+                oscillating: false,
+            };
+        }
+        let dir = usize::from(direction != Direction::Plus);
+        ws.linearised_at.copy_from_slice(&ws.last_pressure[dir]);
+        let reference = mean_positive(&ws.linearised_at).unwrap_or(1.0);
+        let tolerance = self.spec.tolerance / 100.0;
+        let (mut iterations, mut error) = (0, f64::INFINITY);
+        while iterations < self.spec.max_iterations {
+            iterations += 1;
+            for i in 0..n {
+                let p = ws.linearised_at[i];
+                let (w, slope) = self.wear_and_slope(p, reference, &ws.sliding);
+                ws.compliance[i] = kf * slope / ws.area[i];
+                ws.trial[i] = shape[i] + kf * (w - slope * p);
+                ws.slope[i] = slope;
+                ws.linear_wear[i] = w - slope * p;
+            }
+            solver.set_compliance(&ws.compliance);
+            let info = solver.solve_into(&ws.trial, direction, &mut ws.solution);
+            count.track(info);
+            if count.first_failure.is_some() {
+                break;
+            }
+            let pressure = &ws.solution.pressure;
+            let (mut worst, mut largest) = (0.0f64, 0.0f64);
+            for i in 0..n {
+                let exact = self.wear_and_slope(pressure[i], reference, &ws.sliding).0;
+                let model = ws.linear_wear[i] + ws.slope[i] * pressure[i];
+                worst = worst.max((exact - model).abs());
+                largest = largest.max(exact);
+            }
+            error = worst / largest.max(f64::MIN_POSITIVE);
+            ws.linearised_at.copy_from_slice(pressure);
+            if error <= tolerance {
+                break;
+            }
+        }
+        ws.last_pressure[dir].copy_from_slice(&ws.solution.pressure);
+        self.apply_wear(shape, kf, ws);
+        StepOutcome {
+            iterations,
+            criterion: 100.0 * error,
+            converged: error <= tolerance,
+            oscillating: false,
+        }
+    }
+
+    /// Wear of one half period at pressure p (mm) and the slope Newton's method uses.
+    fn wear_and_slope(&self, p: f64, reference: f64, sliding: &[f64]) -> (f64, f64) {
+        let p = p.max(0.0);
+        self.laws
+            .iter()
+            .zip(sliding)
+            .fold((0.0, 0.0), |(w, s), (law, slide)| {
+                let c = law.beta * slide;
+                let slope = if law.b == 1.0 {
+                    c
+                } else if law.b > 1.0 {
+                    c * law.b * p.powf(law.b - 1.0)
+                } else if p > 0.0 {
+                    c * p.powf(law.b - 1.0)
+                } else {
+                    c * reference.powf(law.b - 1.0)
+                };
+                (w + c * p.powf(law.b), s + slope)
+            })
+    }
+
+    /// Add the wear of k half periods at the solution's pressures to `shape`; leave one half
+    /// period's wear in `ws.increment`.
+    fn apply_wear(&self, shape: &mut [f64], k: f64, ws: &mut Workspace) {
+        self.wear_increment(&ws.solution.pressure, &ws.sliding, 1.0, &mut ws.increment);
+        for (g, w) in shape.iter_mut().zip(&ws.increment) {
+            *g += k * w;
+        }
+    }
+
+    /// One step of the paper's half-period scheme (eq. 24–30) as the paper solves it: the wear
+    /// of k half periods at the pressure of the end of the step, by fixed-point iteration until
+    /// the criterion holds. Its contraction depends on k times the wear rate over the smallest
+    /// eigenvalues of the flexibility, which shrink as the contact is refined: on fine meshes
+    /// it oscillates, which is why [`WearIntegrator::implicit_step`] is the default. Leaves in
+    /// `ws.increment` the wear of one half period and in `ws.solution` the contact solution
+    /// it was computed from.
+    fn fixed_point_step(
+        &self,
+        solver: &mut ContactSolver,
+        shape: &mut [f64],
+        direction: Direction,
+        k: usize,
+        ws: &mut Workspace,
+        count: &mut SolveCount,
+    ) -> StepOutcome {
         let n = shape.len();
         let sliding = &ws.sliding;
         count.track(solver.solve_into(shape, direction, &mut ws.solution));
@@ -233,14 +427,22 @@ impl WearIntegrator {
             }
         }
         // Keep the last evaluated wear (converged or not): a relaxed iterate was never checked
-        // and, with a relaxation factor above one, could even be negative.
+        // and, with a relaxation factor above one, could even be negative. How far it is from
+        // the trial wear whose pressure produced it says whether the kept pressure belongs to
+        // the kept shape (eq. 27 sees only the mean and can pass an oscillating shape).
+        let oscillation = pointwise_change(&ws.new_increment, &ws.increment);
         std::mem::swap(&mut ws.increment, &mut ws.new_increment);
         for (g, w) in shape.iter_mut().zip(ws.increment.iter_mut()) {
             *g += *w;
             // Report one half period's wear, not k of them.
             *w /= k as f64;
         }
-        (iterations, criterion, converged)
+        StepOutcome {
+            iterations,
+            criterion,
+            converged,
+            oscillating: oscillation > OSCILLATION_LIMIT,
+        }
     }
 
     /// The implicit criterion in percent between the trial increment `ws.increment` and the
@@ -248,13 +450,7 @@ impl WearIntegrator {
     /// largest pointwise change.
     fn criterion(&self, shape: &[f64], ws: &Workspace) -> f64 {
         if self.spec.criterion == "pointwise" {
-            let largest = ws.new_increment.iter().fold(0.0f64, |m, w| m.max(w.abs()));
-            let change = ws
-                .new_increment
-                .iter()
-                .zip(&ws.increment)
-                .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-            100.0 * change / largest.max(f64::MIN_POSITIVE)
+            100.0 * pointwise_change(&ws.new_increment, &ws.increment)
         } else {
             let integral = |g: &[f64]| g.iter().zip(&ws.weight).map(|(a, w)| a * w).sum::<f64>();
             let before = integral(&ws.trial);
@@ -264,17 +460,87 @@ impl WearIntegrator {
     }
 }
 
+/// Largest pointwise difference of two wear increments, relative to the largest of `new`.
+fn pointwise_change(new: &[f64], old: &[f64]) -> f64 {
+    let largest = new.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+    let change = new
+        .iter()
+        .zip(old)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    change / largest.max(f64::MIN_POSITIVE)
+}
+
+/// Mean of the positive entries, if any.
+fn mean_positive(values: &[f64]) -> Option<f64> {
+    let (sum, count) = values
+        .iter()
+        .filter(|&&v| v > 0.0)
+        .fold((0.0, 0usize), |(s, c), v| (s + v, c + 1));
+    (count > 0).then(|| sum / count as f64)
+}
+
+/// Largest elastic normal approach max_i |(A_nn P)_i| (mm) of contact forces `force` (N).
+fn elastic_approach(contact: &CondensedContact, force: &[f64]) -> f64 {
+    let n = force.len();
+    (0..n)
+        .map(|i| {
+            let row = &contact.a_nn[i * n..(i + 1) * n];
+            row.iter().zip(force).map(|(a, f)| a * f).sum::<f64>().abs()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The adaptive schedule's local error estimate of the step just taken (mm):
+/// (k/2) |ΔW − ΔW_previous| without its rigid part (see [`super::adaptive`]).
+fn local_error(ws: &Workspace, k: usize, rigid: &[f64], m: usize) -> f64 {
+    let change: Vec<f64> = ws
+        .increment
+        .iter()
+        .zip(&ws.previous_increment)
+        .map(|(a, b)| a - b)
+        .collect();
+    let touched: Vec<bool> = ws
+        .increment
+        .iter()
+        .zip(&ws.previous_increment)
+        .map(|(a, b)| *a > 0.0 || *b > 0.0)
+        .collect();
+    let residual = non_rigid_part(&change, &touched, rigid, m, &ws.weight);
+    0.5 * k as f64 * residual.iter().fold(0.0f64, |a, r| a.max(r.abs()))
+}
+
+/// What one step did.
+struct StepOutcome {
+    iterations: usize,
+    /// Final criterion of the step's iteration, percent.
+    criterion: f64,
+    converged: bool,
+    oscillating: bool,
+}
+
 /// Buffers of one run, sized once so that the step loop does not allocate.
 struct Workspace {
     /// ∫|v|ᵃ dτ of one half period for each wear law.
     sliding: Vec<f64>,
     /// Lobatto weight × edge Jacobian of each contact point (mm), for eq. 27's integral.
     weight: Vec<f64>,
+    /// Contact area w_i t of each point, mm².
+    area: Vec<f64>,
+    /// Wear compliance of the implicit step, mm/N, and all zeros (no wear compliance).
+    compliance: Vec<f64>,
+    zero: Vec<f64>,
+    /// Newton's linearisation of the wear: slope (mm/MPa), offset (mm) and pressure (MPa).
+    slope: Vec<f64>,
+    linear_wear: Vec<f64>,
+    linearised_at: Vec<f64>,
+    /// Last pressure of each direction ('+', '−'), the start of Newton's method.
+    last_pressure: [Vec<f64>; 2],
     trial: Vec<f64>,
     increment: Vec<f64>,
+    previous_increment: Vec<f64>,
     new_increment: Vec<f64>,
     residual: Vec<f64>,
-    /// The shape after the last step whose wear was finite.
+    /// The shape after the last step that was kept.
     last_shape: Vec<f64>,
     solution: ContactSolution,
 }
@@ -284,8 +550,16 @@ impl Workspace {
         Workspace {
             sliding: vec![],
             weight: vec![0.0; n],
+            area: vec![0.0; n],
+            compliance: vec![0.0; n],
+            zero: vec![0.0; n],
+            slope: vec![0.0; n],
+            linear_wear: vec![0.0; n],
+            linearised_at: vec![0.0; n],
+            last_pressure: [vec![0.0; n], vec![0.0; n]],
             trial: vec![0.0; n],
             increment: vec![0.0; n],
+            previous_increment: vec![0.0; n],
             new_increment: vec![0.0; n],
             residual: vec![0.0; n],
             last_shape: vec![0.0; n],
@@ -294,17 +568,21 @@ impl Workspace {
     }
 }
 
-/// Contact solves of one step, and how many of them failed.
+/// Contact solves of one step, how many of them failed, and the first failure.
 #[derive(Default)]
 struct SolveCount {
     solves: usize,
     failed: usize,
+    first_failure: Option<SolveInfo>,
 }
 
 impl SolveCount {
     fn track(&mut self, info: SolveInfo) {
         self.solves += 1;
-        self.failed += usize::from(info.status == Status::Failed);
+        if info.status == Status::Failed {
+            self.failed += 1;
+            self.first_failure.get_or_insert(info);
+        }
     }
 }
 
