@@ -260,6 +260,8 @@ impl WearIntegrator {
     /// for b > 1 and the secant ΔW(p̂)/p̂ for b < 1 (a tangent that grows without bound near
     /// p = 0 would overshoot to negative pressures); at p̂ = 0 it is the secant to the mean
     /// contact pressure (b < 1) or zero (b > 1).
+    // The Newton loop walks several per-point arrays in step; an index reads best there.
+    #[allow(clippy::needless_range_loop)]
     fn implicit_step(
         &self,
         solver: &mut ContactSolver,
