@@ -549,9 +549,14 @@ impl ContactSolver {
             .fold(0.0f64, |a, p| a.max(p.abs()))
             .max(1e-300);
         let mut comp = 0.0f64;
+        let a = &self.a[direction.index()];
         for i in 0..n {
             let d = out.gap[i] + self.penalty_compliance[i] * out.force[i];
-            comp = comp.max(out.pressure[i].min(d * self.gap_to_pressure[i]).abs());
+            // A gap as a pressure through the point's own compliance, the wear's included: a
+            // large wear compliance scales the round-off of d with it.
+            let to_pressure = 1.0
+                / (a[i * n + i].max(1.0 / self.gap_to_pressure[i] / self.area[i]) * self.area[i]);
+            comp = comp.max(out.pressure[i].min(d * to_pressure).abs());
         }
         info.complementarity = comp / peak;
         let e = &self.e[direction.index()];

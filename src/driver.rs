@@ -284,15 +284,26 @@ impl WearRun {
             "failed_solves": h.failed_solves,
             "unconverged_steps": h.unconverged_steps,
             "oscillating_steps": h.oscillating_steps,
-            "steady_distance": {
-                "wear": number(h.steady_distance.wear),
-                "delta_w": number(h.steady_distance.delta_w),
-                "summed_pressure": number(h.steady_distance.summed_pressure),
-            },
-            "steady_reached": h.steady_distance.wear <= crate::wear::STEADY_REPORT_LIMIT,
+
             "setup_seconds": self.setup_seconds,
             "run_seconds": self.run_seconds,
         });
+        match &h.steady_distance {
+            Some(d) => {
+                summary["steady_distance"] = json!({
+                    "wear": number(d.wear),
+                    "delta_w": number(d.delta_w),
+                    "summed_pressure": number(d.summed_pressure),
+                });
+                summary["steady_reached"] = json!(d.wear <= crate::wear::STEADY_REPORT_LIMIT);
+            }
+            None => {
+                // No full cycle: the profiles of `final` are not results.
+                if let Some(map) = summary.as_object_mut() {
+                    map.remove("final");
+                }
+            }
+        }
         if let Some((step, reason)) = &h.stopped {
             // Only present when the run ended early: at this step, for this reason.
             summary["stopped_at_step"] = json!(step);

@@ -162,13 +162,17 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 None => vec!["no steps".to_string()],
             };
             println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '{first}' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
-            let d = &h.steady_distance;
-            let verdict = if d.wear <= wearfem::wear::STEADY_REPORT_LIMIT {
-                "at the steady state"
-            } else {
-                "NOT yet at the steady state: run longer, or use `wearfem steady`"
-            };
-            println!("last cycle: wear per period rigid to {:.2e} (relative), δw = {:.3e} mm, p⁺ + p⁻ spread {:.2} %: {verdict}", d.wear, d.delta_w, 100.0 * d.summed_pressure);
+            match &h.steady_distance {
+                Some(d) => {
+                    let verdict = if d.wear <= wearfem::wear::STEADY_REPORT_LIMIT {
+                        "at the steady state"
+                    } else {
+                        "NOT yet at the steady state: run longer, or use `wearfem steady`"
+                    };
+                    println!("last cycle: wear per period rigid to {:.2e} (relative), δw = {:.3e} mm, p⁺ + p⁻ spread {:.2} %: {verdict}", d.wear, d.delta_w, 100.0 * d.summed_pressure);
+                }
+                None => println!("no full cycle completed: no final profiles written"),
+            }
             match &h.stopped {
                 Some((step, wearfem::wear::StopReason::SteadyState)) => {
                     println!("adaptive schedule: steady state reached at step {step}");

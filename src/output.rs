@@ -228,7 +228,10 @@ pub fn write_wear(
         p_minus: (!monotonic).then_some(&h.p_minus[..]),
         shape: &h.shape,
     };
-    profiles.write(dir, "final.csv", "Last cycle")?;
+    if h.steady_distance.is_some() {
+        // Only a completed cycle has profiles worth writing.
+        profiles.write(dir, "final.csv", "Last cycle")?;
+    }
     let rows: Vec<Vec<Value>> = h
         .snapshots
         .iter()

@@ -178,8 +178,9 @@ pub struct WearHistory {
     /// The step at which the run stopped early and why: nothing of that step is kept, except
     /// for [`StopReason::SteadyState`], where the step is the last one recorded.
     pub stopped: Option<(usize, StopReason)>,
-    /// How far the last full cycle is from the steady state.
-    pub steady_distance: SteadyDistance,
+    /// How far the last full cycle is from the steady state; None until a cycle is complete
+    /// (then `p_plus`, `p_minus` are not results either).
+    pub steady_distance: Option<SteadyDistance>,
 }
 
 /// Largest pointwise difference, relative to the largest wear, between the wear a

@@ -2,21 +2,24 @@
 //! error estimate instead of a fixed schedule.
 //!
 //! A step holds the wear rate at its end-of-step value for k half periods (backward Euler in
-//! the worn shape), and alternates the sliding direction step by step. Both approximations
-//! err by about half the change of the wear rate across the step, times k:
+//! the worn shape), so its local error is about half the change across the step. The
+//! estimate is measured where it matters, in the pressure:
 //!
-//! e ≈ (k/2) · |ΔW_this − ΔW_previous|,
+//! e ≈ ½ max_i |p_i − p_i,before|,
 //!
-//! where ΔW is the wear of one half period at the end of a step and the previous step is the
-//! one before it (the other direction under reciprocating sliding, so the estimate also sees
-//! the error of lumping k '+' half periods before k '−' ones). Only the part of e that no
-//! rigid plate motion explains changes a pressure, so e is measured after removing the best
-//! rigid motion. The allowed e is `tolerance` times the elastic normal approach of the first
-//! solve (the size of the deformations that shape the pressure). After every full cycle k
-//! moves on a ladder of powers of two: halved when e exceeds the allowance, doubled when e is
-//! below 0.4 of it (both half cycles of a cycle share one k, so that a cycle stays symmetric,
-//! and a factorisation made for one k is reused whenever the run comes back to it).
-//! The run stops when the last cycle's wear is rigid to `steady_tolerance`.
+//! with p_before the pressure of the last step in the same direction. The allowed e is
+//! `tolerance` times the largest pressure of the first solve. After every full cycle k moves
+//! on a ladder of powers of two: halved when the cycle's largest e exceeds the allowance,
+//! doubled when it is below 0.4 of it (both half cycles of a cycle share one k, so that a
+//! cycle stays symmetric, and a factorisation made for one k is reused whenever the run comes
+//! back to it).
+//!
+//! The run stops when the steady state is reached. A slow transient changes the pressures by
+//! less and less per cycle, so a small change alone does not mean being close: while k is
+//! unchanged the changes of successive cycles shrink by a ratio r, and the distance still to
+//! go is about e_n r/(1 − r) summed geometrically. The run stops when that distance (with
+//! r < 1 measured over two cycles of one k) is below `steady_tolerance` times the peak
+//! pressure and the last cycle's wear is a rigid motion to `steady_tolerance`.
 
 use serde::{Deserialize, Serialize};
 
@@ -24,8 +27,8 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct AdaptiveSpec {
-    /// Local error allowed per step, relative to the elastic normal approach at the contact
-    /// (dimensionless; default 1e-3).
+    /// Local error allowed per step, as a pressure relative to the peak pressure of the
+    /// first solve (dimensionless; default 1e-3).
     #[serde(default = "default_tolerance")]
     pub tolerance: f64,
     /// The run stops when the last cycle's wear is a rigid motion to this relative accuracy
@@ -81,10 +84,12 @@ pub struct Controller {
     spec: AdaptiveSpec,
     /// Current factor k.
     pub factor: usize,
-    /// Allowed local error, mm (set from the first solve).
+    /// Allowed local error, MPa (set from the first solve).
     allowance: f64,
-    /// Largest estimate over the current cycle, mm.
+    /// Largest estimate over the current cycle, MPa.
     cycle_error: f64,
+    /// The previous cycle's estimate and its k.
+    previous: Option<(f64, usize)>,
 }
 
 impl Controller {
@@ -95,33 +100,45 @@ impl Controller {
             factor: 1,
             allowance: 0.0,
             cycle_error: 0.0,
+            previous: None,
         }
     }
 
-    /// Set the error allowance from the elastic normal approach (mm) of the first solve.
-    pub fn set_scale(&mut self, elastic_approach: f64) {
-        self.allowance = self.spec.tolerance * elastic_approach;
+    /// Set the error allowance from the peak pressure (MPa) of the first solve.
+    pub fn set_scale(&mut self, peak_pressure: f64) {
+        self.allowance = self.spec.tolerance * peak_pressure;
     }
 
-    /// Whether a cycle with this distance from the steady state ends the run.
-    pub fn is_steady(&self, distance: f64) -> bool {
-        distance <= self.spec.steady_tolerance
-    }
-
-    /// Record a step's error estimate (mm).
+    /// Record a step's error estimate (MPa).
     pub fn record(&mut self, error: f64) {
         self.cycle_error = self.cycle_error.max(error);
     }
 
-    /// At the end of a cycle: choose k for the next one.
-    pub fn end_cycle(&mut self) {
+    /// At the end of a cycle whose wear is rigid to `wear_distance`: whether the steady
+    /// state is reached; if not, choose k for the next cycle.
+    pub fn end_cycle(&mut self, wear_distance: f64) -> bool {
+        let error = self.cycle_error;
+        let peak = self.allowance / self.spec.tolerance;
+        if let Some((before, k)) = self.previous {
+            if k == self.factor && before > 0.0 && error < before && self.allowance > 0.0 {
+                let ratio = error / before;
+                let to_go = 2.0 * error * ratio / (1.0 - ratio);
+                if to_go <= self.spec.steady_tolerance * peak
+                    && wear_distance <= self.spec.steady_tolerance
+                {
+                    return true;
+                }
+            }
+        }
+        self.previous = Some((error, self.factor));
         if self.allowance > 0.0 {
-            if self.cycle_error > self.allowance {
+            if error > self.allowance {
                 self.factor = (self.factor / 2).max(1);
-            } else if self.cycle_error < 0.4 * self.allowance {
+            } else if error < 0.4 * self.allowance {
                 self.factor = (2 * self.factor).min(self.spec.max_factor);
             }
         }
         self.cycle_error = 0.0;
+        false
     }
 }

@@ -4,8 +4,8 @@
 
 use super::adaptive::Controller;
 use super::{
-    non_rigid_part, steady_distance, Snapshot, SteadyDistance, StepRecord, StopReason, WearHistory,
-    WearIntegrator, OSCILLATION_LIMIT,
+    steady_distance, Snapshot, StepRecord, StopReason, WearHistory, WearIntegrator,
+    OSCILLATION_LIMIT,
 };
 use crate::complementarity::{ContactSolution, ContactSolver, Direction, SolveInfo, Status};
 use crate::contact::{CondensedContact, ContactPoints};
@@ -48,7 +48,7 @@ impl WearIntegrator {
             oscillating_steps: 0,
             failed_solves: 0,
             stopped: None,
-            steady_distance: SteadyDistance::default(),
+            steady_distance: None,
         };
         let monotonic = self.is_monotonic();
         let zero_at = self
@@ -70,7 +70,15 @@ impl WearIntegrator {
                 None => factor(&self.schedule, step),
             };
             let mut count = SolveCount::default();
-            ws.previous_increment.copy_from_slice(&ws.increment);
+            let same = usize::from(direction != Direction::Plus);
+            ws.previous_increment
+                .copy_from_slice(&ws.increment_of[same]);
+            // The first half cycle of a cycle sees the wear the second one is about to add
+            // (its value of the last cycle): both then see the cycle's end shape.
+            let look_ahead = first_half && !monotonic && self.spec.substeps == 0;
+            for (a, w) in ws.ahead.iter_mut().zip(&ws.second_half) {
+                *a = if look_ahead { k as f64 * w } else { 0.0 };
+            }
             let outcome = self.step(solver, &mut shape, direction, k, &mut ws, &mut count);
             hist.solves += count.solves;
             hist.failed_solves += count.failed;
@@ -98,6 +106,21 @@ impl WearIntegrator {
             hist.oscillating_steps += usize::from(outcome.oscillating);
             half_periods += k;
             ws.last_shape.copy_from_slice(&shape);
+            ws.increment_of[same].copy_from_slice(&ws.increment);
+            if let Some(c) = controller.as_mut() {
+                let pressure = &ws.solution.pressure;
+                if step <= 2 {
+                    c.set_scale(pressure.iter().fold(0.0, |a: f64, p| a.max(*p)));
+                } else {
+                    // Backward Euler errs by about half the change across the step.
+                    let change = pressure
+                        .iter()
+                        .zip(&ws.pressure_of[same])
+                        .fold(0.0f64, |a, (p, q)| a.max((p - q).abs()));
+                    c.record(0.5 * change);
+                }
+                ws.pressure_of[same].copy_from_slice(pressure);
+            }
             let (pressure, increment) = (&ws.solution.pressure, &ws.increment);
             let dissipation: f64 = (0..n)
                 .map(|i| pressure[i] * increment[i] * points.weight[i])
@@ -108,34 +131,27 @@ impl WearIntegrator {
             } else {
                 hist.p_minus.copy_from_slice(pressure);
             }
-            if let Some(c) = controller.as_mut() {
-                if step == 1 {
-                    c.set_scale(elastic_approach(contact, &ws.solution.force));
-                } else {
-                    c.record(local_error(&ws, k, &rigid, m));
-                }
-            }
             let mut delta_w = 0.0;
             let mut steady_now = false;
             if first_half && !monotonic {
                 cycle_wear.copy_from_slice(increment);
             } else {
                 // A full cycle ends here (under monotonic sliding every step is one).
+                ws.second_half.copy_from_slice(increment);
                 for i in 0..n {
                     cycle_wear[i] = increment[i] + if monotonic { 0.0 } else { cycle_wear[i] };
                 }
                 let minus: &[f64] = if monotonic { &[] } else { &hist.p_minus };
                 let distance =
                     steady_distance(&cycle_wear, &hist.p_plus, minus, &rigid, m, &points.weight);
-                hist.steady_distance = distance;
+                hist.steady_distance = Some(distance);
                 delta_w = distance.delta_w;
                 if let Some(weights) = &zero_at {
                     shift_to_zero(&mut shape, weights, points);
                     ws.last_shape.copy_from_slice(&shape);
                 }
                 if let Some(c) = controller.as_mut() {
-                    steady_now = step > 2 && c.is_steady(distance.wear);
-                    c.end_cycle();
+                    steady_now = step > 2 && c.end_cycle(distance.wear);
                 }
             }
             let record = StepRecord {
@@ -285,7 +301,10 @@ impl WearIntegrator {
                 ws.compliance[i] = kf * c / ws.area[i];
             }
             solver.set_compliance(&ws.compliance);
-            count.track(solver.solve_into(shape, direction, &mut ws.solution));
+            for i in 0..n {
+                ws.trial[i] = shape[i] + ws.ahead[i];
+            }
+            count.track(solver.solve_into(&ws.trial, direction, &mut ws.solution));
             self.apply_wear(shape, kf, ws);
             return StepOutcome {
                 iterations: 1,
@@ -305,7 +324,7 @@ impl WearIntegrator {
                 let p = ws.linearised_at[i];
                 let (w, slope) = self.wear_and_slope(p, reference, &ws.sliding);
                 ws.compliance[i] = kf * slope / ws.area[i];
-                ws.trial[i] = shape[i] + kf * (w - slope * p);
+                ws.trial[i] = shape[i] + ws.ahead[i] + kf * (w - slope * p);
                 ws.slope[i] = slope;
                 ws.linear_wear[i] = w - slope * p;
             }
@@ -481,36 +500,6 @@ fn mean_positive(values: &[f64]) -> Option<f64> {
     (count > 0).then(|| sum / count as f64)
 }
 
-/// Largest elastic normal approach max_i |(A_nn P)_i| (mm) of contact forces `force` (N).
-fn elastic_approach(contact: &CondensedContact, force: &[f64]) -> f64 {
-    let n = force.len();
-    (0..n)
-        .map(|i| {
-            let row = &contact.a_nn[i * n..(i + 1) * n];
-            row.iter().zip(force).map(|(a, f)| a * f).sum::<f64>().abs()
-        })
-        .fold(0.0, f64::max)
-}
-
-/// The adaptive schedule's local error estimate of the step just taken (mm):
-/// (k/2) |ΔW − ΔW_previous| without its rigid part (see [`super::adaptive`]).
-fn local_error(ws: &Workspace, k: usize, rigid: &[f64], m: usize) -> f64 {
-    let change: Vec<f64> = ws
-        .increment
-        .iter()
-        .zip(&ws.previous_increment)
-        .map(|(a, b)| a - b)
-        .collect();
-    let touched: Vec<bool> = ws
-        .increment
-        .iter()
-        .zip(&ws.previous_increment)
-        .map(|(a, b)| *a > 0.0 || *b > 0.0)
-        .collect();
-    let residual = non_rigid_part(&change, &touched, rigid, m, &ws.weight);
-    0.5 * k as f64 * residual.iter().fold(0.0f64, |a, r| a.max(r.abs()))
-}
-
 /// What one step did.
 struct StepOutcome {
     iterations: usize,
@@ -535,10 +524,19 @@ struct Workspace {
     slope: Vec<f64>,
     linear_wear: Vec<f64>,
     linearised_at: Vec<f64>,
+    /// Wear of one half period of the last second half cycle, mm, and that wear times k: the
+    /// look-ahead of the next first half cycle.
+    second_half: Vec<f64>,
+    ahead: Vec<f64>,
+    /// Pressure of the last step in each direction, for the adaptive error estimate, MPa.
+    pressure_of: [Vec<f64>; 2],
     /// Last pressure of each direction ('+', '−'), the start of Newton's method.
     last_pressure: [Vec<f64>; 2],
     trial: Vec<f64>,
     increment: Vec<f64>,
+    /// The last wear increment of each direction ('+', '−') and, during a step, that of the
+    /// step's own direction before it.
+    increment_of: [Vec<f64>; 2],
     previous_increment: Vec<f64>,
     new_increment: Vec<f64>,
     residual: Vec<f64>,
@@ -559,8 +557,12 @@ impl Workspace {
             linear_wear: vec![0.0; n],
             linearised_at: vec![0.0; n],
             last_pressure: [vec![0.0; n], vec![0.0; n]],
+            pressure_of: [vec![0.0; n], vec![0.0; n]],
+            second_half: vec![0.0; n],
+            ahead: vec![0.0; n],
             trial: vec![0.0; n],
             increment: vec![0.0; n],
+            increment_of: [vec![0.0; n], vec![0.0; n]],
             previous_increment: vec![0.0; n],
             new_increment: vec![0.0; n],
             residual: vec![0.0; n],
