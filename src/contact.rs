@@ -288,26 +288,15 @@ fn project_on_body2(
     ))
 }
 
-/// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces.
-fn flexibility(body: &ElasticBody, traces: &[Trace]) -> Mat<f64> {
-    let n = traces.len();
-    let n_dofs = body.dofs.n_dofs();
-    let mut rhs = Mat::<f64>::zeros(n_dofs, 2 * n);
-    for (i, tr) in traces.iter().enumerate() {
-        for &(g, coef) in tr {
-            for c in 0..2 {
-                rhs[(g[c], 2 * i + c)] += coef;
-            }
-        }
-    }
-    body.solve_in_place(&mut rhs);
-    Mat::from_fn(2 * n, 2 * n, |r, col| {
-        let (i, c) = (r / 2, r % 2);
-        traces[i]
-            .iter()
-            .map(|&(g, coef)| coef * rhs[(g[c], col)])
-            .sum()
-    })
+/// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces,
+/// by the Schur complement onto the trace dofs ([`ElasticBody::trace_flexibility`]).
+fn flexibility(
+    problem: &Problem,
+    body: &ElasticBody,
+    traces: &[Trace],
+) -> Result<Mat<f64>, ProblemError> {
+    body.trace_flexibility(traces)
+        .map_err(|e| problem.error("contact", e.to_string()))
 }
 
 impl CondensedContact {
@@ -427,8 +416,8 @@ impl CondensedContact {
                 }
             }
         }
-        let g1 = flexibility(body1, &traces1);
-        let g2 = flexibility(body2, &traces2);
+        let g1 = flexibility(problem, body1, &traces1)?;
+        let g2 = flexibility(problem, body2, &traces2)?;
         let n = points.x.len();
         let mut a_nn = vec![0.0; n * n];
         let mut a_nt = vec![0.0; n * n];

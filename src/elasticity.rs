@@ -17,6 +17,8 @@ use faer::sparse::{SparseColMat, SymbolicSparseColMat};
 use faer::{Mat, Side};
 use std::collections::HashMap;
 
+mod schur;
+
 /// Errors of the elasticity stage.
 #[derive(Debug, thiserror::Error)]
 pub enum ElasticityError {
@@ -90,6 +92,8 @@ pub struct ElasticBody {
     types: Vec<CondensedElement>,
     fixed: Vec<bool>,
     factor: faer::sparse::linalg::solvers::Llt<usize, f64>,
+    /// The condensed stiffness matrix (N/mm), fixed rows and columns replaced by the identity.
+    matrix: SparseColMat<usize, f64>,
     /// Size figures of the set-up.
     pub info: SetupInfo,
 }
@@ -288,6 +292,7 @@ impl ElasticBody {
             types,
             fixed,
             factor,
+            matrix,
             info,
         })
     }

@@ -1,0 +1,238 @@
+//! The flexibility of a body at a few points (the contact points) by a Schur complement,
+//! instead of one full solve per unit load.
+//!
+//! The displacements at the points depend only on the dofs of the elements they lie on (the
+//! trace dofs E): u = C u_E. Ordering the unknowns so that E comes last (the rest I by
+//! approximate minimum degree among themselves), the Cholesky factor's trailing block L_EE is
+//! the factor of the Schur complement S = K_EE − K_EI K_II⁻¹ K_IE, and (K⁻¹)_EE = S⁻¹. So
+//!
+//!   G = C K⁻¹ Cᵀ = C (L_EE L_EEᵀ)⁻¹ Cᵀ = Yᵀ Y,  Y = L_EE⁻¹ Cᵀ:
+//!
+//! one sparse factorisation with a constrained ordering, one dense triangular solve with 2N
+//! columns of height |E| and one dense product, in place of 2N sparse solves of the whole
+//! body. The factorisation does the elimination of I once for all columns; what is left is
+//! dense work of order |E|³, done by faer's blocked kernels.
+
+use super::{ElasticBody, ElasticityError};
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::cholesky::llt::factor::LltRegularization;
+use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
+use faer::perm::PermRef;
+use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, CholeskySymbolicParams, SymbolicCholeskyRaw, SymmetricOrdering,
+};
+use faer::sparse::linalg::{amd, SupernodalThreshold};
+use faer::sparse::SymbolicSparseColMat;
+use faer::{Mat, Par, Side};
+
+/// One point's displacement as a combination of global dofs: (x dof, z dof, coefficient).
+pub type Trace = Vec<([usize; 2], f64)>;
+
+impl ElasticBody {
+    /// Flexibility G (mm/N, 2N × 2N, row 2i + c = component c of point i) of this body at the
+    /// points whose displacements are `traces`: G = C K⁻¹ Cᵀ by the Schur complement onto the
+    /// trace dofs (module docs). Fixed dofs do not move and are left out.
+    pub fn trace_flexibility(&self, traces: &[Trace]) -> Result<Mat<f64>, ElasticityError> {
+        let n = self.dofs.n_dofs();
+        let rows = 2 * traces.len();
+        // Position of each trace dof in E (usize::MAX: not a trace dof).
+        let mut position = vec![usize::MAX; n];
+        let mut trace_dofs = Vec::new();
+        for tr in traces {
+            for &(g, _) in tr {
+                for &d in &g {
+                    if !self.fixed[d] && position[d] == usize::MAX {
+                        position[d] = trace_dofs.len();
+                        trace_dofs.push(d);
+                    }
+                }
+            }
+        }
+        let ne = trace_dofs.len();
+        if ne == 0 {
+            return Ok(Mat::zeros(rows, rows));
+        }
+        let forward = self.constrained_order(&position, &trace_dofs)?;
+        let mut inverse = vec![0usize; n];
+        for (new, &old) in forward.iter().enumerate() {
+            inverse[old] = new;
+        }
+        let singular = || ElasticityError::Singular {
+            body: self.name.clone(),
+        };
+        let params = CholeskySymbolicParams {
+            supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SUPERNODAL,
+            ..Default::default()
+        };
+        let perm = PermRef::new_checked(&forward, &inverse, n);
+        let symbolic = factorize_symbolic_cholesky(
+            self.matrix.symbolic(),
+            Side::Lower,
+            SymmetricOrdering::Custom(perm),
+            params,
+        )
+        .map_err(|_| singular())?;
+        let mut values = vec![0.0; symbolic.len_val()];
+        let mut buffer = MemBuffer::new(
+            symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default()),
+        );
+        symbolic
+            .factorize_numeric_llt(
+                &mut values,
+                self.matrix.as_ref(),
+                Side::Lower,
+                LltRegularization::default(),
+                Par::Seq,
+                MemStack::new(&mut buffer),
+                Default::default(),
+            )
+            .map_err(|_| singular())?;
+        let SymbolicCholeskyRaw::Supernodal(supernodal) = symbolic.raw() else {
+            return Err(singular());
+        };
+        let factor = SupernodalLltRef::new(supernodal, &values);
+        let first = n - ne;
+        let mut l_ee = Mat::<f64>::zeros(ne, ne);
+        for s in 0..supernodal.n_supernodes() {
+            let node = factor.supernode(s);
+            let (start, block) = (node.start(), node.val());
+            let ncols = block.ncols();
+            if start + ncols <= first {
+                continue;
+            }
+            let pattern = node.pattern();
+            for c in 0..ncols {
+                let col = start + c;
+                if col < first {
+                    continue;
+                }
+                for r in c..block.nrows() {
+                    let row = if r < ncols {
+                        start + r
+                    } else {
+                        pattern[r - ncols]
+                    };
+                    l_ee[(row - first, col - first)] = block[(r, c)];
+                }
+            }
+        }
+        // Cᵀ in the factor's order of E: column 2i + c holds point i's component c.
+        let mut y = Mat::<f64>::zeros(ne, rows);
+        for (i, tr) in traces.iter().enumerate() {
+            for &(g, coef) in tr {
+                for c in 0..2 {
+                    if position[g[c]] != usize::MAX {
+                        y[(inverse[g[c]] - first, 2 * i + c)] += coef;
+                    }
+                }
+            }
+        }
+        solve_lower_triangular_in_place(l_ee.as_ref(), y.as_mut(), Par::Seq);
+        Ok(y.transpose() * &y)
+    }
+
+    /// The elimination order: the dofs outside E by approximate minimum degree of their own
+    /// block, then E (in `trace_dofs` order).
+    fn constrained_order(
+        &self,
+        position: &[usize],
+        trace_dofs: &[usize],
+    ) -> Result<Vec<usize>, ElasticityError> {
+        let n = position.len();
+        let interior: Vec<usize> = (0..n).filter(|&d| position[d] == usize::MAX).collect();
+        let mut local = vec![usize::MAX; n];
+        for (k, &d) in interior.iter().enumerate() {
+            local[d] = k;
+        }
+        let symbolic = self.matrix.symbolic();
+        let (col_ptr, row_idx) = (symbolic.col_ptr(), symbolic.row_idx());
+        let mut ptr = Vec::with_capacity(interior.len() + 1);
+        let mut idx = Vec::new();
+        ptr.push(0);
+        for &d in &interior {
+            let mut rows: Vec<usize> = row_idx[col_ptr[d]..col_ptr[d + 1]]
+                .iter()
+                .filter_map(|&r| (local[r] != usize::MAX).then_some(local[r]))
+                .collect();
+            rows.sort_unstable();
+            idx.extend(rows);
+            ptr.push(idx.len());
+        }
+        let ni = interior.len();
+        let pattern = SymbolicSparseColMat::new_checked(ni, ni, ptr, None, idx);
+        let mut perm = vec![0usize; ni];
+        let mut perm_inv = vec![0usize; ni];
+        let mut buffer = MemBuffer::new(amd::order_scratch::<usize>(ni, pattern.compute_nnz()));
+        amd::order(
+            &mut perm,
+            &mut perm_inv,
+            pattern.as_ref(),
+            Default::default(),
+            MemStack::new(&mut buffer),
+        )
+        .map_err(|_| ElasticityError::Singular {
+            body: self.name.clone(),
+        })?;
+        Ok(perm
+            .iter()
+            .map(|&k| interior[k])
+            .chain(trace_dofs.iter().copied())
+            .collect())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::problem::Problem;
+
+    #[test]
+    fn schur_flexibility_equals_the_full_solves() {
+        // The strip of Example 1 with traces at a few surface dofs, one trace mixing two dofs:
+        // both ways compute C K⁻¹ Cᵀ exactly, so they agree to round-off (1e-10 of the
+        // largest entry leaves room for the conditioning of K, about 1e6 here).
+        let problem =
+            Problem::from_toml(crate::examples::example("punch-b40").unwrap(), "b40").unwrap();
+        let body = problem.elastic_body(1, &[]).unwrap();
+        let mesh_dofs = body.dofs.n_dofs();
+        let traces: Vec<super::Trace> = (0..6)
+            .map(|i| {
+                let d = (37 * i + 11) % (mesh_dofs / 2) * 2;
+                vec![
+                    ([d, d + 1], 0.7),
+                    ([(d + 2) % mesh_dofs, (d + 3) % mesh_dofs], 0.3),
+                ]
+            })
+            .collect();
+        let schur = body.trace_flexibility(&traces).unwrap();
+        let n = traces.len();
+        let mut rhs = faer::Mat::<f64>::zeros(mesh_dofs, 2 * n);
+        for (i, tr) in traces.iter().enumerate() {
+            for &(g, coef) in tr {
+                for c in 0..2 {
+                    rhs[(g[c], 2 * i + c)] += coef;
+                }
+            }
+        }
+        body.solve_in_place(&mut rhs);
+        let largest = (0..2 * n)
+            .flat_map(|r| (0..2 * n).map(move |c| (r, c)))
+            .map(|(r, c)| schur[(r, c)].abs())
+            .fold(0.0, f64::max);
+        for r in 0..2 * n {
+            let (i, c) = (r / 2, r % 2);
+            for col in 0..2 * n {
+                let full: f64 = traces[i]
+                    .iter()
+                    .filter(|(g, _)| !body.is_fixed(g[c]))
+                    .map(|&(g, coef)| coef * rhs[(g[c], col)])
+                    .sum();
+                assert!(
+                    (full - schur[(r, col)]).abs() < 1e-10 * largest,
+                    "({r}, {col}): {full} vs {}",
+                    schur[(r, col)]
+                );
+            }
+        }
+    }
+}
