@@ -1,0 +1,100 @@
+//! The ParaView files parse as VTK XML with consistent sizes (the Python test under
+//! tests/python/ reads them with meshio and checks values against summary.json).
+
+mod common;
+use common::problem;
+use std::path::Path;
+
+/// The value of attribute `name` in the tag `tag` (text between its quotes).
+fn attribute(tag: &str, name: &str) -> Option<String> {
+    let start = tag.find(&format!(" {name}=\""))? + name.len() + 3;
+    let end = start + tag[start..].find('"')?;
+    Some(tag[start..end].to_string())
+}
+
+/// Check one .vtu: well-formed enough (every DataArray closed), every array as long as its
+/// points or cells times its components; returns (points, cells).
+fn check_vtu(path: &Path) -> (usize, usize) {
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.starts_with("<?xml") && text.trim_end().ends_with("</VTKFile>"));
+    let piece = &text[text.find("<Piece").unwrap()..];
+    let tag = &piece[..piece.find('>').unwrap()];
+    let points: usize = attribute(tag, "NumberOfPoints").unwrap().parse().unwrap();
+    let cells: usize = attribute(tag, "NumberOfCells").unwrap().parse().unwrap();
+    assert!(points > 0 && cells > 0);
+    let section = |name: &str| {
+        let a = text.find(&format!("<{name}>")).unwrap();
+        let b = text.find(&format!("</{name}>")).unwrap();
+        &text[a..b]
+    };
+    let connectivity_len = {
+        let cells_text = section("Cells");
+        let a = cells_text.find("Name=\"offsets\"").unwrap();
+        let body = &cells_text[cells_text[a..].find('>').unwrap() + a + 1..];
+        let values: Vec<usize> = body[..body.find("</DataArray>").unwrap()]
+            .split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert_eq!(values.len(), cells);
+        *values.last().unwrap()
+    };
+    for (name, count) in [
+        ("PointData", points),
+        ("CellData", cells),
+        ("Points", points),
+        ("Cells", cells),
+    ] {
+        let s = section(name);
+        for array in s.split("<DataArray").skip(1) {
+            let (tag, rest) = array.split_at(array.find('>').unwrap());
+            let components: usize = attribute(tag, "NumberOfComponents")
+                .unwrap()
+                .parse()
+                .unwrap();
+            let values: Vec<f64> = rest[1..rest.find("</DataArray>").unwrap()]
+                .split_whitespace()
+                .map(|v| v.parse().unwrap())
+                .collect();
+            assert!(values.iter().all(|v| v.is_finite()));
+            let expected = if attribute(tag, "Name").as_deref() == Some("connectivity") {
+                connectivity_len
+            } else {
+                count * components
+            };
+            assert_eq!(
+                values.len(),
+                expected,
+                "{}: {name} array {:?}",
+                path.display(),
+                attribute(tag, "Name")
+            );
+        }
+    }
+    (points, cells)
+}
+
+#[test]
+fn contact_job_files_parse_and_have_consistent_sizes() {
+    let dir = std::env::temp_dir().join(format!("wearfem-vtk-{}", std::process::id()));
+    let p = problem("punch-b40", &[]);
+    wearfem::vtk::write_contact_job(&dir, &p).unwrap();
+    let pvd = std::fs::read_to_string(dir.join(wearfem::vtk::PVD_NAME)).unwrap();
+    let files: Vec<String> = pvd
+        .split("<DataSet")
+        .skip(1)
+        .map(|d| attribute(d, "file").unwrap())
+        .collect();
+    assert_eq!(files.len(), 2);
+    let (points, cells) = check_vtu(&dir.join(&files[0]));
+    // 8 × (3 + 4) punch and 12 × 4 strip elements, p = 8: 8 × 8 sub-quads and 9 × 9 points
+    // each.
+    let elements = 8 * 7 + 12 * 4;
+    assert_eq!((points, cells), (81 * elements, 64 * elements));
+    let (points, cells) = check_vtu(&dir.join(&files[1]));
+    assert_eq!(
+        (points, cells),
+        (65, 64),
+        "65 contact points joined by 64 segments"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
