@@ -80,10 +80,10 @@ impl Check {
 }
 
 fn percent(x: f64) -> String {
-    if x >= 1e-3 {
+    if 100.0 * x >= 1e-3 {
         format!("{:.3} %", 100.0 * x)
     } else {
-        format!("{x:.1e}")
+        format!("{:.1e} %", 100.0 * x)
     }
 }
 
@@ -225,6 +225,7 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     cases::power_laws(&mut checks, options.quick)?;
     cases::load_variants(&mut checks)?;
     cases::steady(&mut checks, options.quick)?;
+    cases::beyond(&mut checks)?;
     if !options.quick {
         cases::brake(&mut checks)?;
     }

@@ -496,10 +496,15 @@ pub fn steady(checks: &mut Checks, quick: bool) -> Outcome {
             _ => "eq. 23a: 2p̃",
         };
         // 1e-8: the Newton iteration solves the summed-pressure conditions to round-off.
+        let summed = if b == 1.0 {
+            "p⁺ + p⁻"
+        } else {
+            "(p⁺)ᵇ + (p⁻)ᵇ"
+        };
         push(
             checks,
             format!("steady.{name}.theory"),
-            format!("{name}: steady (p⁺)ᵇ + (p⁻)ᵇ, point furthest from theory"),
+            format!("{name}: steady {summed}, point furthest from theory"),
             if b == 1.0 { "MPa" } else { "MPa^b" },
             theory(i),
             source,
@@ -530,6 +535,51 @@ pub fn steady(checks: &mut Checks, quick: bool) -> Outcome {
         // 1 % of the peak: what the transient reaches at the paper's step counts.
         push(checks, format!("steady.{name}.transient"), format!("{name}: time integration ({steps_text}) at the point furthest from the steady state"), "MPa", reference, "wearfem steady (direct, no time integration)", ours, Bound::Absolute(0.01 * peak));
     }
+    Ok(())
+}
+
+/// Beyond the paper, by the direct steady state: b = 0.5 (eq. 23c, 2^(1/b) = 4) and a punch
+/// that lifts off for good (variant 3's first window only, μ = 0.05): p⁺ + p⁻ is the triangle
+/// that equilibrium fixes, 2F₀/(3 · 15 mm · t)·2 = 66.67 MPa at x = 1070 falling to 0 at 1115.
+pub fn beyond(checks: &mut Checks) -> Outcome {
+    let p = problem(
+        "punch-b40-b0.8",
+        &[("a = 1.0, b = 0.8 }", "a = 1.0, b = 0.5 }")],
+    )?;
+    let (state, _, _) = driver::steady(&p).map_err(|e| fail("b = 0.5", e))?;
+    let sums: Vec<f64> = (0..state.p_plus.len())
+        .map(|i| state.p_plus[i].sqrt() + state.p_minus[i].sqrt())
+        .collect();
+    let equal = (sums[0] / 2.0).powi(2);
+    let edge = state.p_plus[0].max(state.p_minus[0]);
+    // 1e-9: the steady conditions are solved to round-off (measured 1e-12).
+    push(
+        checks,
+        "steady.b0.5.eq23c",
+        "b = 0.5 (punch-b40-b0.8 load): steady edge pressure / pressure where p⁺ = p⁻",
+        "",
+        4.0,
+        "eq. 23c: 2^(1/b)",
+        edge / equal,
+        Bound::Relative(1e-9),
+    );
+    let lift = [
+        ("normal = 12.5", "normal = 0.0"),
+        ("friction = 0.25", "friction = 0.05"),
+    ];
+    let p = problem("punch-b40-variant3", &lift)?;
+    let (state, contact, _) = driver::steady(&p).map_err(|e| fail("lift-off", e))?;
+    let triangle =
+        |i: usize| ((66.0 + 2.0 / 3.0) * (1115.0 - contact.points.x[i][0]) / 45.0).max(0.0);
+    let sum = |i: usize| state.p_plus[i] + state.p_minus[i];
+    let i = (0..state.p_plus.len())
+        .max_by(|&a, &c| {
+            (sum(a) - triangle(a))
+                .abs()
+                .total_cmp(&(sum(c) - triangle(c)).abs())
+        })
+        .unwrap_or(0);
+    push(checks, "steady.lift_off.triangle", format!("lift-off (variant 3 load on [1070, 1100] only, μ = 0.05): steady p⁺ + p⁻ at x = {:.2} mm (furthest point)", contact.points.x[i][0]), "MPa", triangle(i), "equilibrium: triangle 66.67 MPa → 0 at x = 1115", sum(i), Bound::Absolute(1e-8));
     Ok(())
 }
 
