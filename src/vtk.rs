@@ -6,9 +6,11 @@
 //! geometry: ParaView's *Warp By Vector* on `displacement` (with a scale factor, the
 //! displacements are micrometres on a model of centimetres) shows the deformed shape.
 //!
-//! A p-version element carries polynomials of degree p, so each element is sampled on an
-//! (m + 1) × (m + 1) grid of reference points (m = max(p, 2)) and written as m × m linear
-//! sub-quadrilaterals. Points are not shared between elements: stresses are discontinuous
+//! A p-version element carries polynomials of degree p, so each element is sampled on the
+//! (m + 1) × (m + 1) Gauss–Lobatto grid of reference points (m = max(p, 2)) and written as
+//! m × m linear sub-quadrilaterals; the contact points (Lobatto points of body 1's edge) are
+//! sample points, and the sub-cells are finest at the element edges where the fields vary
+//! most. Points are not shared between elements: stresses are discontinuous
 //! across element edges and ParaView shows them as computed.
 
 use crate::deformation::BodyField;
@@ -75,16 +77,15 @@ impl Grid {
     fn add(&mut self, b: &VtkBody) {
         let body = b.body;
         let m = subdivisions(body.dofs.p);
+        let mut nodes = crate::quadrature::gauss_lobatto(m + 1).points;
+        nodes.sort_by(f64::total_cmp);
         for element in 0..body.mesh.elements.len() {
             let first = self.points.len();
             let material = body.mesh.elements[element].material;
             let poisson = body.materials[material].poisson;
             for j in 0..=m {
                 for i in 0..=m {
-                    let (xi, eta) = (
-                        -1.0 + 2.0 * i as f64 / m as f64,
-                        -1.0 + 2.0 * j as f64 / m as f64,
-                    );
+                    let (xi, eta) = (nodes[i], nodes[j]);
                     let v = b.field.values_at_reference(body, element, xi, eta);
                     self.points.push(body.mesh.map(element, xi, eta));
                     self.displacement.push(v.displacement);
