@@ -95,9 +95,11 @@ pub fn write_figure(path: &Path, figure: &Figure) -> Result<(), String> {
 }
 
 type Points = Vec<(f64, f64)>;
+/// A closed interval (lo, hi) of an axis.
+type Range = (f64, f64);
 
 /// The finite points of each series (positive y only on a log axis) and the padded ranges.
-fn prepare(figure: &Figure) -> Option<(Vec<Points>, (f64, f64), (f64, f64))> {
+fn prepare(figure: &Figure) -> Option<(Vec<Points>, Range, Range)> {
     let keep = |p: &(f64, f64)| p.0.is_finite() && p.1.is_finite() && (!figure.log_y || p.1 > 0.0);
     let points: Vec<Points> = figure
         .series
