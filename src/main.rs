@@ -113,6 +113,7 @@ impl From<wearfem::vtk::VtkError> for Failure {
         match e {
             wearfem::vtk::VtkError::Problem(e) => Failure::Input(e.to_string()),
             wearfem::vtk::VtkError::Output(e) => Failure::Compute(e.to_string()),
+            other => Failure::Compute(other.to_string()),
         }
     }
 }
@@ -178,7 +179,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 &contact,
                 &solution,
             )?;
-            if wants_vtk(vtk, &p) {
+            // A failed solve gets no ParaView files (its message follows).
+            if wants_vtk(vtk, &p) && info.status == wearfem::complementarity::Status::Solved {
                 wearfem::vtk::write_contact_job(&out, &p)?;
             }
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);

@@ -98,3 +98,26 @@ fn contact_job_files_parse_and_have_consistent_sizes() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn output_section_is_read_strictly() {
+    let text = wearfem::examples::example("punch-b40").unwrap().to_string();
+    let ok = wearfem::problem::Problem::from_toml(
+        &format!("{text}\n[output]\nvtk = true\n"),
+        "out.toml",
+    )
+    .unwrap();
+    assert!(ok.spec.output.unwrap().vtk);
+    for (extra, expected) in [
+        ("[output]\npvd = true\n", "pvd"),
+        ("[output]\nvtk = \"yes\"\n", "boolean"),
+    ] {
+        let err = wearfem::problem::Problem::from_toml(&format!("{text}\n{extra}"), "out.toml")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.starts_with("out.toml: ") && err.contains(expected) && !err.contains('\n'),
+            "{err}"
+        );
+    }
+}

@@ -7,7 +7,7 @@
 //! than the wear step's implicit tolerance.
 
 use super::{write_bodies, write_contact, write_pvd, PvdEntry, VtkBody, VtkContact};
-use crate::complementarity::{ContactSolver, Direction};
+use crate::complementarity::{ContactSolver, Direction, Status};
 use crate::contact::CondensedContact;
 use crate::deformation::{contact_fields, BodyField, RigidMotion};
 use crate::driver::{direction, method, WearRun};
@@ -28,6 +28,14 @@ pub enum VtkError {
     /// A file could not be written.
     #[error(transparent)]
     Output(#[from] OutputError),
+    /// The contact solve of a state failed again; its files were not written.
+    #[error("ParaView output: the contact solve of the state at time {time} failed (complementarity residual {residual:.3e}); its files were not written")]
+    Unsolved {
+        /// The state's time (half periods).
+        time: f64,
+        /// The failed solve's complementarity residual.
+        residual: f64,
+    },
 }
 
 /// One contact state to write.
@@ -59,8 +67,17 @@ pub fn write_contact_states(
     let (contact, body1, body2) = CondensedContact::build(problem)?;
     let mut solver = ContactSolver::new(&contact, method(problem)?);
     let mut entries = Vec::new();
+    let mut unsolved = None;
     for (k, state) in states.iter().enumerate() {
-        let (solution, _) = solver.solve(&state.gap, state.direction);
+        let (solution, info) = solver.solve(&state.gap, state.direction);
+        if info.status != Status::Solved {
+            // Fields from a failed solve would look like results; leave the state out.
+            unsolved.get_or_insert(VtkError::Unsolved {
+                time: state.time,
+                residual: info.complementarity,
+            });
+            continue;
+        }
         let fields = contact_fields(
             problem,
             (&body1, &body2),
@@ -129,7 +146,7 @@ pub fn write_contact_states(
     }
     let path = dir.join(PVD_NAME);
     write_pvd(&path, &entries).map_err(io(&path))?;
-    Ok(())
+    unsolved.map_or(Ok(()), Err)
 }
 
 /// ParaView files of `wearfem contact`: the initial contact solve.
