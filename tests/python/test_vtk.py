@@ -140,3 +140,28 @@ def test_steady_job_reproduces_both_half_cycles(tmp_path):
         # (tests/steady.rs); 1e-6 leaves room for the ASCII round trip.
         peak = max(summary[key])
         np.testing.assert_allclose(scalar(line.point_data["pressure"]), summary[key], rtol=0, atol=1e-6 * peak)
+
+
+def test_plate_edge_moves_with_the_plate(tmp_path):
+    """Body 1 is clamped to the rigid plate along its top edge (z = 200): there the displacement
+    is the plate's motion λ_F (0, −1) + λ_M (z − 140, −(x − 1100)) about the pin (1100, 140)."""
+    out, summary = run(tmp_path, "contact", "punch-b40")
+    bodies = next(m for _, part, m in collection(out) if part == 0)
+    lam_f, lam_m = summary["rigid"]["lambda_F"], summary["rigid"]["lambda_M"]
+    top = np.abs(bodies.points[:, 1] - 200.0) < 1e-9
+    assert top.sum() > 0
+    x, z = bodies.points[top, 0], bodies.points[top, 1]
+    expected = np.stack([lam_m * (z - 140.0), -lam_f - lam_m * (x - 1100.0)], axis=1)
+    np.testing.assert_allclose(bodies.point_data["displacement"][top][:, :2], expected, rtol=0, atol=1e-12)
+    # The plate really moves: λ_F is the punch's descent under 10 kN, micrometres, not zero.
+    assert lam_f > 1e-4
+
+
+@pytest.mark.parametrize("example", ["punch-b40", "brake"])
+def test_sub_cells_are_counter_clockwise(tmp_path, example):
+    """Every sub-quadrilateral, straight or on an arc, has positive area in VTK's node order."""
+    out, _ = run(tmp_path, "contact", example)
+    bodies = next(m for _, part, m in collection(out) if part == 0)
+    p = bodies.points[bodies.cells[0].data][:, :, :2]
+    area = 0.5 * np.sum(p[:, :, 0] * np.roll(p[:, :, 1], -1, axis=1) - np.roll(p[:, :, 0], -1, axis=1) * p[:, :, 1], axis=1)
+    assert np.all(area > 0)
