@@ -73,7 +73,7 @@ enum Command {
     /// Rerun every validation claim (closed forms, the paper's numbers, steady vs transient);
     /// prints the table, writes DIR/validation.md and DIR/validation.json, exits 1 on a FAIL.
     Validate {
-        /// Skip the long transient runs (about 10 s instead of about a minute).
+        /// Skip the long transient runs (about 3 s instead of 5 s).
         #[arg(long)]
         quick: bool,
         /// Output directory.

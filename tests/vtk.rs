@@ -121,3 +121,53 @@ fn output_section_is_read_strictly() {
         );
     }
 }
+
+#[test]
+fn run_with_output_vtk_key_writes_every_state_through_the_binary() {
+    // `[output] vtk = true` in the problem file asks for the files as `--vtk` does; 4 steps
+    // with the recorded steps 1 and 2 give the states 0, 1, 2 and the last step, 4.
+    let dir = std::env::temp_dir().join(format!("wearfem-vtk-run-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("p.toml");
+    let text = wearfem::examples::example("punch-b40").unwrap();
+    std::fs::write(&file, format!("{text}\n[output]\nvtk = true\n")).unwrap();
+    let out = dir.join("out");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .arg("run")
+        .arg(&file)
+        .args(["--steps", "4", "--out"])
+        .arg(&out)
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let pvd = std::fs::read_to_string(out.join(wearfem::vtk::PVD_NAME)).unwrap();
+    let sets: Vec<(String, String)> = pvd
+        .split("<DataSet")
+        .skip(1)
+        .map(|d| {
+            (
+                attribute(d, "timestep").unwrap(),
+                attribute(d, "file").unwrap(),
+            )
+        })
+        .collect();
+    let times: Vec<&str> = sets.iter().map(|s| s.0.as_str()).step_by(2).collect();
+    // Half periods: step 1 = 1, step 2 = 2, step 4 = 4 (k = 1 for n ≤ 50).
+    assert_eq!(times, ["0", "1", "2", "4"]);
+    for (_, file) in &sets {
+        check_vtu(&out.join(file));
+    }
+    for name in [
+        "pressure_plus.png",
+        "pressure_minus.png",
+        "shape_evolution.png",
+        "delta_w.png",
+    ] {
+        let bytes = std::fs::read(out.join(name)).unwrap();
+        assert_eq!(&bytes[1..4], b"PNG", "{name}");
+        // IHDR: width and height, big-endian, at bytes 16..24.
+        let size = |k: usize| u32::from_be_bytes(bytes[k..k + 4].try_into().unwrap());
+        assert_eq!((size(16), size(20)), wearfem::plot::SIZE, "{name}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
