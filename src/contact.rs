@@ -92,6 +92,8 @@ pub struct ContactPoints {
     pub tangent: Vec<Point>,
     /// Initial geometric gap along n_c plus any initial shape, mm.
     pub initial_gap: Vec<f64>,
+    /// Partner point [x, z] of each contact point on body 2's contact edge, mm.
+    pub partner: Vec<Point>,
 }
 
 /// One point's displacement as a combination of global dofs: (x dof, z dof, coefficient).
@@ -182,6 +184,7 @@ impl ContactPoints {
             normal: vec![],
             tangent: vec![],
             initial_gap: vec![],
+            partner: vec![],
         };
         let mut traces = Vec::new();
         let mut values = vec![0.0; p + 1];
@@ -226,13 +229,13 @@ impl ContactPoints {
     }
 }
 
-/// Find the point of body 2's edge on the line x + s n and return (s, trace).
+/// Find the point of body 2's edge on the line x + s n and return (s, the point, trace).
 fn project_on_body2(
     body: &ElasticBody,
     edges: &[(usize, usize)],
     x: Point,
     n: Point,
-) -> Option<(f64, Trace)> {
+) -> Option<(f64, Point, Trace)> {
     let p = body.dofs.p;
     let mut best: Option<(f64, usize, usize, f64)> = None;
     for &(element, local) in edges {
@@ -274,12 +277,14 @@ fn project_on_body2(
         }
     }
     let (s, element, local, t) = best?;
+    let partner = body.mesh.point_on_edge(element, local, t);
     let dofs = trace_dofs(&body.dofs, &body.mesh, &body.basis, element, local);
     let mut values = vec![0.0; p + 1];
     let mut derivs = vec![0.0; p + 1];
     shape_1d(p, t, &mut values, &mut derivs);
     Some((
         s,
+        partner,
         dofs.iter()
             .zip(&values)
             .map(|(&(g, sg), &v)| (g, sg * v))
@@ -388,7 +393,7 @@ impl CondensedContact {
         })?;
         let mut traces2 = Vec::with_capacity(points.x.len());
         for i in 0..points.x.len() {
-            let (s, tr) = project_on_body2(body2, &edge2, points.x[i], points.normal[i]).ok_or_else(|| {
+            let (s, partner, tr) = project_on_body2(body2, &edge2, points.x[i], points.normal[i]).ok_or_else(|| {
                 problem.error("contact.target_edge", format!("contact point ({:.4}, {:.4}) of body 1 has no partner on \"{}\" along its normal (a part of the edge that crosses the normal line and faces body 1)", points.x[i][0], points.x[i][1], c.target_edge))
             })?;
             let shape = c.initial_shape.map_or(0.0, |sh| {
@@ -396,6 +401,7 @@ impl CondensedContact {
                 sh.radius - (sh.radius * sh.radius - dx * dx).max(0.0).sqrt()
             });
             points.initial_gap.push(s + shape);
+            points.partner.push(partner);
             traces2.push(tr);
         }
         // Loads on the bodies themselves (all tractions but the plate's, which load the plate)

@@ -25,7 +25,10 @@
 //! | wear integration | [`wear`] | [`wear::WearIntegrator`] |
 //! | steady worn state, directly | [`steady`] | [`steady::steady_state`] |
 //! | jobs (elastic, contact, run, steady) | [`driver`] | [`driver::WearRun`] |
+//! | deformed bodies behind a contact solve | [`deformation`] | [`deformation::contact_fields`] |
 //! | output files and plots | [`output`], [`plot`] | [`output::write_wear`] |
+//! | ParaView files | [`vtk`] | [`vtk::write_run`] |
+//! | validation report | [`validate`] | [`validate::run`] |
 //!
 //! Units everywhere: mm, N, MPa (N/mm²), s.
 
@@ -34,6 +37,7 @@
 pub mod basis;
 pub mod complementarity;
 pub mod contact;
+pub mod deformation;
 pub mod dense;
 pub mod dofs;
 pub mod driver;
@@ -52,4 +56,6 @@ pub mod problem;
 pub mod quadrature;
 pub mod schema;
 pub mod steady;
+pub mod validate;
+pub mod vtk;
 pub mod wear;

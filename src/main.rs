@@ -29,6 +29,9 @@ enum Command {
         /// Output directory.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
+        #[arg(long)]
+        vtk: bool,
     },
     /// One contact solve of the initial configuration (no wear); writes DIR/summary.json.
     Contact {
@@ -37,6 +40,9 @@ enum Command {
         /// Output directory.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
+        #[arg(long)]
+        vtk: bool,
     },
     /// Integrate wear over the problem's steps; writes summary.json, history.csv, final.csv.
     Run {
@@ -48,6 +54,9 @@ enum Command {
         /// Override the number of steps.
         #[arg(long)]
         steps: Option<usize>,
+        /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
+        #[arg(long)]
+        vtk: bool,
     },
     /// Compute the steady worn state directly (no time integration); writes summary.json,
     /// steady.csv and pressure.svg, shape.svg.
@@ -57,6 +66,26 @@ enum Command {
         /// Output directory.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
+        #[arg(long)]
+        vtk: bool,
+    },
+    /// Rerun every validation claim (closed forms, the paper's numbers, steady vs transient);
+    /// prints the table, writes DIR/validation.md and DIR/validation.json, exits 1 on a FAIL.
+    Validate {
+        /// Skip the long transient runs (about 3 s instead of 5 s).
+        #[arg(long)]
+        quick: bool,
+        /// Output directory.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Also replace the table between the markers of this Markdown file
+        /// (docs/validation.md).
+        #[arg(long, value_name = "FILE")]
+        update_doc: Option<PathBuf>,
+        /// Replace the reference value of one check, ID=VALUE (tests the failure path).
+        #[arg(long, hide = true)]
+        perturb: Option<String>,
     },
     /// List the built-in examples, or print one (`wearfem examples show NAME`).
     Examples {
@@ -77,6 +106,21 @@ impl From<JobError> for Failure {
     fn from(e: JobError) -> Self {
         Failure::Input(e.to_string())
     }
+}
+
+impl From<wearfem::vtk::VtkError> for Failure {
+    fn from(e: wearfem::vtk::VtkError) -> Self {
+        match e {
+            wearfem::vtk::VtkError::Problem(e) => Failure::Input(e.to_string()),
+            wearfem::vtk::VtkError::Output(e) => Failure::Compute(e.to_string()),
+            other => Failure::Compute(other.to_string()),
+        }
+    }
+}
+
+/// ParaView output is asked for by `--vtk` or by `[output] vtk = true`.
+fn wants_vtk(flag: bool, p: &Problem) -> bool {
+    flag || p.spec.output.as_ref().is_some_and(|o| o.vtk)
 }
 
 impl From<wearfem::output::OutputError> for Failure {
@@ -107,12 +151,16 @@ fn run(cli: Cli) -> Result<(), Failure> {
         problem: None,
         out: PathBuf::from("out"),
         steps: None,
+        vtk: false,
     });
     match command {
-        Command::Elastic { problem, out } => {
+        Command::Elastic { problem, out, vtk } => {
             let p = load(&problem)?;
             let summary = driver::elastic(&p)?;
             write_json(&out, "summary.json", &summary)?;
+            if wants_vtk(vtk, &p) {
+                wearfem::vtk::write_elastic(&out, &p)?;
+            }
             println!(
                 "{}: {} dofs, strain energy {:.9e} N·mm → {}",
                 p.file,
@@ -121,10 +169,20 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 out.join("summary.json").display()
             );
         }
-        Command::Contact { problem, out } => {
+        Command::Contact { problem, out, vtk } => {
             let p = load(&problem)?;
             let (summary, contact, solution, info) = driver::contact(&p)?;
-            wearfem::output::write_contact(&out, &summary, &contact, &solution)?;
+            wearfem::output::write_contact(
+                &out,
+                &wearfem::plot::problem_name(&p.file),
+                &summary,
+                &contact,
+                &solution,
+            )?;
+            // A failed solve gets no ParaView files (its message follows).
+            if wants_vtk(vtk, &p) && info.status == wearfem::complementarity::Status::Solved {
+                wearfem::vtk::write_contact_job(&out, &p)?;
+            }
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
             println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
             if info.status == wearfem::complementarity::Status::Failed {
@@ -135,6 +193,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             problem,
             out,
             steps,
+            vtk,
         } => {
             let name = problem.unwrap_or_else(|| "punch-b40".to_string());
             let p = load(&name)?;
@@ -147,6 +206,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 }
             })?;
             wearfem::output::write_wear(&out, &p, &result)?;
+            if wants_vtk(vtk, &p) {
+                wearfem::vtk::write_run(&out, &p, &result)?;
+            }
             let h = &result.history;
             // Report the last half cycle in the first step's direction ('+' unless a monotonic
             // or reversed run starts with '-'), so the figure always exists.
@@ -186,10 +248,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 return Err(Failure::Compute(format!("{} steps missed their iteration tolerance (wear.tolerance) and {} fixed-point steps kept a shape whose pressure wears it differently by more than {} % (the shape oscillates; use wear.scheme = \"implicit\"); results kept in {}", h.unconverged_steps, h.oscillating_steps, 100.0 * wearfem::wear::OSCILLATION_LIMIT, out.display())));
             }
         }
-        Command::Steady { problem, out } => {
+        Command::Steady { problem, out, vtk } => {
             let p = load(&problem)?;
             let (state, contact, seconds) = driver::steady(&p)?;
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds)?;
+            if wants_vtk(vtk, &p) {
+                wearfem::vtk::write_steady(&out, &p, &state)?;
+            }
             let probes: Vec<String> = driver::contact_probes(&p, &contact)
                 .iter()
                 .map(|(n, i)| {
@@ -212,6 +277,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); the last iterate was written. If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }
         }
+        Command::Validate {
+            quick,
+            out,
+            update_doc,
+            perturb,
+        } => validate(quick, &out, update_doc.as_deref(), perturb.as_deref())?,
         Command::Examples { action, name } => match (action.as_deref(), name) {
             (None, _) => {
                 for (n, text) in EXAMPLES {
@@ -235,6 +306,68 @@ fn run(cli: Cli) -> Result<(), Failure> {
         },
     }
     Ok(())
+}
+
+fn validate(
+    quick: bool,
+    out: &Path,
+    update_doc: Option<&Path>,
+    perturb: Option<&str>,
+) -> Result<(), Failure> {
+    let perturb = match perturb {
+        None => None,
+        Some(text) => {
+            let parsed = text
+                .split_once('=')
+                .and_then(|(id, v)| Some((id.to_string(), v.trim().parse::<f64>().ok()?)));
+            Some(parsed.ok_or_else(|| {
+                Failure::Input(format!("--perturb: expected ID=VALUE, got \"{text}\""))
+            })?)
+        }
+    };
+    let options = wearfem::validate::Options { quick, perturb };
+    let report = wearfem::validate::run(&options).map_err(|e| match e {
+        wearfem::validate::ValidateError::UnknownCheck(_) => Failure::Input(e.to_string()),
+        other => Failure::Compute(other.to_string()),
+    })?;
+    let table = report.markdown();
+    print!("{table}");
+    write_text(out, "validation.md", &table)?;
+    write_json(out, "validation.json", &report.json())?;
+    if let Some(doc) = update_doc {
+        let text = std::fs::read_to_string(doc)
+            .map_err(|e| Failure::Input(format!("{}: cannot read: {e}", doc.display())))?;
+        let new = wearfem::validate::splice(&text, &table).ok_or_else(|| {
+            Failure::Input(format!(
+                "{}: no table markers ({} … {})",
+                doc.display(),
+                wearfem::validate::DOC_BEGIN,
+                wearfem::validate::DOC_END
+            ))
+        })?;
+        std::fs::write(doc, new)
+            .map_err(|e| Failure::Compute(format!("cannot write {}: {e}", doc.display())))?;
+    }
+    println!(
+        "{:.1} s → {}",
+        report.seconds,
+        out.join("validation.md").display()
+    );
+    if !report.passed() {
+        return Err(Failure::Compute(format!(
+            "{} of {} validation checks failed (see the table)",
+            report.failures(),
+            report.checks.len()
+        )));
+    }
+    Ok(())
+}
+
+fn write_text(dir: &Path, name: &str, text: &str) -> Result<(), Failure> {
+    let path = dir.join(name);
+    std::fs::create_dir_all(dir)
+        .and_then(|_| std::fs::write(&path, text))
+        .map_err(|e| Failure::Compute(format!("cannot write {}: {e}", path.display())))
 }
 
 fn main() -> ExitCode {

@@ -138,16 +138,16 @@ impl Profiles<'_> {
                 .collect::<Vec<_>>()
         };
         let mut series = vec![Series {
-            label: "p+",
+            label: "p⁺ ('+' half cycle)",
             points: profile(self.p_plus, 1.0),
         }];
         if self.p_minus.is_some() {
             series.push(Series {
-                label: "p-",
+                label: "p⁻ ('−' half cycle)",
                 points: profile(p_minus, 1.0),
             });
             series.push(Series {
-                label: "p+ + p-",
+                label: "p⁺ + p⁻ (summed)",
                 points: profile(&p_sum, 1.0),
             });
         }
@@ -156,20 +156,20 @@ impl Profiles<'_> {
             &path,
             &format!("{title}: contact pressure"),
             "x (mm)",
-            "p (MPa)",
+            "pressure (MPa)",
             &series,
         )
         .map_err(plot_error(&path))?;
         let path = dir.join("shape.svg");
         let shape = [Series {
             label: "shape",
-            points: profile(self.shape, 1000.0),
+            points: profile(self.shape, 1.0),
         }];
         line_plot(
             &path,
             &format!("{title}: worn shape (wear gap)"),
             "x (mm)",
-            "g (µm)",
+            "shape (mm)",
             &shape,
         )
         .map_err(plot_error(&path))
@@ -228,9 +228,10 @@ pub fn write_wear(
         p_minus: (!monotonic).then_some(&h.p_minus[..]),
         shape: &h.shape,
     };
+    let name = crate::plot::problem_name(&problem.file);
     if h.steady_distance.is_some() {
         // Only a completed cycle has profiles worth writing.
-        profiles.write(dir, "final.csv", "Last cycle")?;
+        profiles.write(dir, "final.csv", &format!("{name}, last cycle"))?;
     }
     let rows: Vec<Vec<Value>> = h
         .snapshots
@@ -277,12 +278,13 @@ pub fn write_wear(
     let path = dir.join("history.svg");
     line_plot(
         &path,
-        "Pressure at the probes, '+' half cycles",
-        "half period",
-        "p (MPa)",
+        &format!("{name}: pressure at the probes, '+' half cycles"),
+        "half periods",
+        "pressure (MPa)",
         &series,
     )
-    .map_err(plot_error(&path))
+    .map_err(plot_error(&path))?;
+    crate::plot::wear_figures(dir, &name, run).map_err(plot_error(dir))
 }
 
 /// Write a steady state: summary.json, steady.csv, pressure.svg and shape.svg.
@@ -323,12 +325,18 @@ pub fn write_steady(
         p_minus,
         shape: &state.shape,
     }
-    .write(dir, "steady.csv", "Steady state")
+    .write(
+        dir,
+        "steady.csv",
+        &format!("{}, steady state", crate::plot::problem_name(&problem.file)),
+    )
 }
 
-/// Write one contact solve: summary.json, contact.csv (x, z, pressure, gap) and pressure.svg.
+/// Write one contact solve: summary.json, contact.csv (x, z, pressure, gap) and pressure.svg
+/// (and .png); `name` names the problem in the plot's title.
 pub fn write_contact(
     dir: &Path,
+    name: &str,
     summary: &Value,
     contact: &crate::contact::CondensedContact,
     solution: &crate::complementarity::ContactSolution,
@@ -360,10 +368,13 @@ pub fn write_contact(
     let path = dir.join("pressure.svg");
     line_plot(
         &path,
-        "Contact pressure",
+        &format!("{name}: contact pressure"),
         "x (mm)",
-        "p (MPa)",
-        &[Series { label: "p", points }],
+        "pressure (MPa)",
+        &[Series {
+            label: "pressure",
+            points,
+        }],
     )
     .map_err(plot_error(&path))
 }

@@ -213,6 +213,17 @@ pub struct ProblemSpec {
     pub plate: Option<crate::contact::PlateSpec>,
     /// Wear settings (see [`crate::wear`]).
     pub wear: Option<crate::wear::WearSpec>,
+    /// Output settings.
+    pub output: Option<OutputSpec>,
+}
+
+/// `[output]`: optional outputs, each also available as a command-line flag.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputSpec {
+    /// Write ParaView files (`results.pvd`, `vtk/*.vtu`), as `--vtk` does. Default false.
+    #[serde(default)]
+    pub vtk: bool,
 }
 
 /// Fixed-length arrays read strictly: the TOML reader fills `[f64; 2]` from the first two

@@ -1,0 +1,122 @@
+//! The displacement fields recovered from a contact solution (src/deformation.rs) are the
+//! fields the condensation reduced: their normal displacements at the contact points, with the
+//! undeformed gap, must give the solver's gap d = A_s P + R λ + g, and the plate's rigid modes
+//! rebuilt from two points must be the modes at every contact point.
+
+mod common;
+use common::problem;
+use wearfem::complementarity::{ContactSolver, Direction, Method, Status};
+use wearfem::contact::CondensedContact;
+use wearfem::deformation::{contact_fields, gap_of_fields, plate_motion};
+use wearfem::problem::Problem;
+
+/// Solve `p` from `gap` in `direction`; compare the gap the fields reproduce (from the
+/// undeformed gap `geometric`) with the solution's.
+fn check_gap(p: &Problem, geometric: &[f64], wear: &[f64], direction: Direction) {
+    let (contact, body1, body2) = CondensedContact::build(p).unwrap();
+    let gap: Vec<f64> = contact
+        .points
+        .initial_gap
+        .iter()
+        .zip(wear)
+        .map(|(g, w)| g + w)
+        .collect();
+    let (sol, info) = ContactSolver::new(&contact, Method::ActiveSet).solve(&gap, direction);
+    assert_eq!(info.status, Status::Solved);
+    let fields = contact_fields(p, (&body1, &body2), &contact, &sol, direction).unwrap();
+    let undeformed: Vec<f64> = geometric.iter().zip(wear).map(|(g, w)| g + w).collect();
+    let reproduced = gap_of_fields((&body1, &body2), &fields, &contact, &undeformed).unwrap();
+    // Both are the same linear map of the same forces (flexibility columns versus one solve
+    // with all forces), so they agree to round-off of the displacements (~1e-2 mm here).
+    let worst = reproduced
+        .iter()
+        .zip(&sol.gap)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        worst < 1e-9,
+        "{}: gap of the fields differs from the solution's by {worst:.3e} mm",
+        p.file
+    );
+    // Not a trivial agreement: the bodies really move by much more than that.
+    let largest = contact
+        .points
+        .x
+        .iter()
+        .map(|&x| {
+            let u = fields[0].values_at(&body1, x).unwrap().displacement;
+            u[0].hypot(u[1])
+        })
+        .fold(0.0, f64::max);
+    assert!(largest > 1e-3, "punch displacement {largest} mm");
+}
+
+#[test]
+fn fields_reproduce_the_gap_of_the_pinned_punch_in_both_directions() {
+    let p = problem("punch-b40", &[]);
+    let (contact, _, _) = CondensedContact::build(&p).unwrap();
+    // No loads on the bodies but the plate's: the initial gap is the undeformed one.
+    let geometric = contact.points.initial_gap.clone();
+    let none = vec![0.0; contact.len()];
+    // A worn shape that lifts the punch's right half off (parabola, 20 µm at the ends).
+    let worn: Vec<f64> = contact
+        .points
+        .x
+        .iter()
+        .map(|x| 2e-2 * ((x[0] - 1085.0) / 45.0).powi(2))
+        .collect();
+    for direction in [Direction::Plus, Direction::Minus] {
+        check_gap(&p, &geometric, &none, direction);
+        check_gap(&p, &geometric, &worn, direction);
+    }
+}
+
+#[test]
+fn fields_include_the_bodies_own_loads() {
+    // 2 MPa on the punch's left side and 5 MPa on the strip's right side: both move the contact
+    // points before any contact force acts. The undeformed gap is that of the same problem
+    // without these loads.
+    let edits = [
+        ("names = { bottom = \"contact\" }", "names = { bottom = \"contact\", left = \"side\" }"),
+        ("names = { bottom = \"base\", top = \"surface\" }", "names = { bottom = \"base\", top = \"surface\", right = \"flank\" }"),
+        ("[[bodies.tractions]]\nedge = \"top\"", "[[bodies.tractions]]\nedge = \"side\"\nnormal = 2.0\n\n[[bodies.tractions]]\nedge = \"top\""),
+        ("[[bodies.supports]]\nedge = \"base\"", "[[bodies.tractions]]\nedge = \"flank\"\nnormal = 5.0\n\n[[bodies.supports]]\nedge = \"base\""),
+    ];
+    let loaded = problem("punch-b40", &edits);
+    let plain = problem("punch-b40", &edits[..2]);
+    let (contact, _, _) = CondensedContact::build(&plain).unwrap();
+    let (loaded_contact, _, _) = CondensedContact::build(&loaded).unwrap();
+    let moved = loaded_contact
+        .points
+        .initial_gap
+        .iter()
+        .zip(&contact.points.initial_gap)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        moved > 1e-4,
+        "the own loads must move the contact points ({moved:.2e} mm)"
+    );
+    let none = vec![0.0; contact.len()];
+    check_gap(&loaded, &contact.points.initial_gap, &none, Direction::Plus);
+}
+
+#[test]
+fn plate_modes_are_rebuilt_at_every_contact_point() {
+    for name in ["punch-b40", "punch-a", "brake"] {
+        let p = problem(name, &[]);
+        let (contact, _, _) = CondensedContact::build(&p).unwrap();
+        for (k, phi) in contact.rigid_modes.iter().enumerate() {
+            let mut unit = vec![0.0; contact.rigid_modes.len()];
+            unit[k] = 1.0;
+            let motion = plate_motion(&contact, &unit);
+            for (x, f) in contact.points.x.iter().zip(phi) {
+                let u = motion.at(*x);
+                assert!(
+                    (u[0] - f[0]).abs() < 1e-9 && (u[1] - f[1]).abs() < 1e-9,
+                    "{name} mode {k} at {x:?}: {u:?} vs {f:?}"
+                );
+            }
+        }
+    }
+}

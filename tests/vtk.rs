@@ -1,0 +1,173 @@
+//! The ParaView files parse as VTK XML with consistent sizes (the Python test under
+//! tests/python/ reads them with meshio and checks values against summary.json).
+
+mod common;
+use common::problem;
+use std::path::Path;
+
+/// The value of attribute `name` in the tag `tag` (text between its quotes).
+fn attribute(tag: &str, name: &str) -> Option<String> {
+    let start = tag.find(&format!(" {name}=\""))? + name.len() + 3;
+    let end = start + tag[start..].find('"')?;
+    Some(tag[start..end].to_string())
+}
+
+/// Check one .vtu: well-formed enough (every DataArray closed), every array as long as its
+/// points or cells times its components; returns (points, cells).
+fn check_vtu(path: &Path) -> (usize, usize) {
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.starts_with("<?xml") && text.trim_end().ends_with("</VTKFile>"));
+    let piece = &text[text.find("<Piece").unwrap()..];
+    let tag = &piece[..piece.find('>').unwrap()];
+    let points: usize = attribute(tag, "NumberOfPoints").unwrap().parse().unwrap();
+    let cells: usize = attribute(tag, "NumberOfCells").unwrap().parse().unwrap();
+    assert!(points > 0 && cells > 0);
+    let section = |name: &str| {
+        let a = text.find(&format!("<{name}>")).unwrap();
+        let b = text.find(&format!("</{name}>")).unwrap();
+        &text[a..b]
+    };
+    let connectivity_len = {
+        let cells_text = section("Cells");
+        let a = cells_text.find("Name=\"offsets\"").unwrap();
+        let body = &cells_text[cells_text[a..].find('>').unwrap() + a + 1..];
+        let values: Vec<usize> = body[..body.find("</DataArray>").unwrap()]
+            .split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert_eq!(values.len(), cells);
+        *values.last().unwrap()
+    };
+    for (name, count) in [
+        ("PointData", points),
+        ("CellData", cells),
+        ("Points", points),
+        ("Cells", cells),
+    ] {
+        let s = section(name);
+        for array in s.split("<DataArray").skip(1) {
+            let (tag, rest) = array.split_at(array.find('>').unwrap());
+            let components: usize = attribute(tag, "NumberOfComponents")
+                .unwrap()
+                .parse()
+                .unwrap();
+            let values: Vec<f64> = rest[1..rest.find("</DataArray>").unwrap()]
+                .split_whitespace()
+                .map(|v| v.parse().unwrap())
+                .collect();
+            assert!(values.iter().all(|v| v.is_finite()));
+            let expected = if attribute(tag, "Name").as_deref() == Some("connectivity") {
+                connectivity_len
+            } else {
+                count * components
+            };
+            assert_eq!(
+                values.len(),
+                expected,
+                "{}: {name} array {:?}",
+                path.display(),
+                attribute(tag, "Name")
+            );
+        }
+    }
+    (points, cells)
+}
+
+#[test]
+fn contact_job_files_parse_and_have_consistent_sizes() {
+    let dir = std::env::temp_dir().join(format!("wearfem-vtk-{}", std::process::id()));
+    let p = problem("punch-b40", &[]);
+    wearfem::vtk::write_contact_job(&dir, &p).unwrap();
+    let pvd = std::fs::read_to_string(dir.join(wearfem::vtk::PVD_NAME)).unwrap();
+    let files: Vec<String> = pvd
+        .split("<DataSet")
+        .skip(1)
+        .map(|d| attribute(d, "file").unwrap())
+        .collect();
+    assert_eq!(files.len(), 2);
+    let (points, cells) = check_vtu(&dir.join(&files[0]));
+    // 8 × (3 + 4) punch and 12 × 4 strip elements, p = 8: 8 × 8 sub-quads and 9 × 9 points
+    // each.
+    let elements = 8 * 7 + 12 * 4;
+    assert_eq!((points, cells), (81 * elements, 64 * elements));
+    let (points, cells) = check_vtu(&dir.join(&files[1]));
+    assert_eq!(
+        (points, cells),
+        (65, 64),
+        "65 contact points joined by 64 segments"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn output_section_is_read_strictly() {
+    let text = wearfem::examples::example("punch-b40").unwrap().to_string();
+    let ok = wearfem::problem::Problem::from_toml(
+        &format!("{text}\n[output]\nvtk = true\n"),
+        "out.toml",
+    )
+    .unwrap();
+    assert!(ok.spec.output.unwrap().vtk);
+    for (extra, expected) in [
+        ("[output]\npvd = true\n", "pvd"),
+        ("[output]\nvtk = \"yes\"\n", "boolean"),
+    ] {
+        let err = wearfem::problem::Problem::from_toml(&format!("{text}\n{extra}"), "out.toml")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.starts_with("out.toml: ") && err.contains(expected) && !err.contains('\n'),
+            "{err}"
+        );
+    }
+}
+
+#[test]
+fn run_with_output_vtk_key_writes_every_state_through_the_binary() {
+    // `[output] vtk = true` in the problem file asks for the files as `--vtk` does; 4 steps
+    // with the recorded steps 1 and 2 give the states 0, 1, 2 and the last step, 4.
+    let dir = std::env::temp_dir().join(format!("wearfem-vtk-run-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("p.toml");
+    let text = wearfem::examples::example("punch-b40").unwrap();
+    std::fs::write(&file, format!("{text}\n[output]\nvtk = true\n")).unwrap();
+    let out = dir.join("out");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .arg("run")
+        .arg(&file)
+        .args(["--steps", "4", "--out"])
+        .arg(&out)
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let pvd = std::fs::read_to_string(out.join(wearfem::vtk::PVD_NAME)).unwrap();
+    let sets: Vec<(String, String)> = pvd
+        .split("<DataSet")
+        .skip(1)
+        .map(|d| {
+            (
+                attribute(d, "timestep").unwrap(),
+                attribute(d, "file").unwrap(),
+            )
+        })
+        .collect();
+    let times: Vec<&str> = sets.iter().map(|s| s.0.as_str()).step_by(2).collect();
+    // Half periods: step 1 = 1, step 2 = 2, step 4 = 4 (k = 1 for n ≤ 50).
+    assert_eq!(times, ["0", "1", "2", "4"]);
+    for (_, file) in &sets {
+        check_vtu(&out.join(file));
+    }
+    for name in [
+        "pressure_plus.png",
+        "pressure_minus.png",
+        "shape_evolution.png",
+        "delta_w.png",
+    ] {
+        let bytes = std::fs::read(out.join(name)).unwrap();
+        assert_eq!(&bytes[1..4], b"PNG", "{name}");
+        // IHDR: width and height, big-endian, at bytes 16..24.
+        let size = |k: usize| u32::from_be_bytes(bytes[k..k + 4].try_into().unwrap());
+        assert_eq!((size(16), size(20)), wearfem::plot::SIZE, "{name}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
