@@ -18,6 +18,7 @@
 //! | elasticity, condensation, factorisation | [`elasticity`] | [`elasticity::ElasticBody`] |
 //! | loads, post-processing | [`loads`], [`fields`] | [`loads::Traction`] |
 //! | problem files: schema, validation, model | [`schema`], [`problem`] | [`problem::Problem`] |
+//! | overrides (`--set KEY=VALUE`) | [`overrides`] | [`overrides::Override`] |
 //! | contact condensation | [`contact`] | [`contact::CondensedContact`] |
 //! | small dense LU, Lemke's method | [`dense`], [`lemke`] | [`dense::DenseLu`] |
 //! | contact solve | [`complementarity`] | [`complementarity::ContactSolver`] |
@@ -25,6 +26,7 @@
 //! | wear integration | [`wear`] | [`wear::WearIntegrator`] |
 //! | steady worn state, directly | [`steady`] | [`steady::steady_state`] |
 //! | jobs (elastic, contact, run, steady) | [`driver`] | [`driver::WearRun`] |
+//! | parameter studies | [`sweep`] | [`sweep::Sweep`] |
 //! | output files and plots | [`output`], [`plot`] | [`output::write_wear`] |
 //!
 //! Units everywhere: mm, N, MPa (N/mm²), s.
@@ -47,9 +49,11 @@ pub mod loads;
 pub mod material;
 pub mod mesh;
 pub mod output;
+pub mod overrides;
 pub mod plot;
 pub mod problem;
 pub mod quadrature;
 pub mod schema;
 pub mod steady;
+pub mod sweep;
 pub mod wear;

@@ -7,7 +7,10 @@ use std::process::ExitCode;
 use wearfem::driver::{self, JobError};
 use wearfem::examples::EXAMPLES;
 use wearfem::output::write_json;
+use wearfem::overrides::Override;
 use wearfem::problem::Problem;
+
+mod progress;
 
 #[derive(Parser)]
 #[command(
@@ -18,6 +21,9 @@ use wearfem::problem::Problem;
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// Show no progress bar (it is also hidden when stderr is not a terminal).
+    #[arg(long, global = true)]
+    quiet: bool,
 }
 
 #[derive(Subcommand)]
@@ -29,6 +35,9 @@ enum Command {
         /// Output directory.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// Override a key of the problem file: KEY=VALUE, e.g. contact.friction=0.3 (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
     },
     /// One contact solve of the initial configuration (no wear); writes DIR/summary.json.
     Contact {
@@ -37,6 +46,9 @@ enum Command {
         /// Output directory.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// Override a key of the problem file: KEY=VALUE, e.g. contact.friction=0.3 (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
     },
     /// Integrate wear over the problem's steps; writes summary.json, history.csv, final.csv.
     Run {
@@ -48,12 +60,39 @@ enum Command {
         /// Override the number of steps.
         #[arg(long)]
         steps: Option<usize>,
+        /// Override a key of the problem file: KEY=VALUE, e.g. contact.friction=0.3 (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
     },
     /// Compute the steady worn state directly (no time integration); writes summary.json,
     /// steady.csv and pressure.svg, shape.svg.
     Steady {
         /// Problem file (TOML) or built-in example name.
         problem: String,
+        /// Output directory.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Override a key of the problem file: KEY=VALUE, e.g. contact.friction=0.3 (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+    },
+    /// A parameter study: the Cartesian product of the --set lists, solved in parallel; writes
+    /// sweep.csv (one row per variant), sweep.json and sweep.svg.
+    Sweep {
+        /// Problem file (TOML) or built-in example name.
+        problem: String,
+        /// KEY=[V1, V2, …]: the values of one key (a TOML array; repeatable, first key slowest).
+        #[arg(long = "set", value_name = "KEY=[V1, V2, …]", required = true)]
+        set: Vec<String>,
+        /// Solve the steady state of each variant (the default).
+        #[arg(long, conflicts_with = "run")]
+        steady: bool,
+        /// Run the wear integration of each variant.
+        #[arg(long)]
+        run: bool,
+        /// Variants solved at once (default: one per core).
+        #[arg(short = 'j', long = "jobs", default_value_t = 0)]
+        jobs: usize,
         /// Output directory.
         #[arg(long, default_value = "out")]
         out: PathBuf,
@@ -85,7 +124,18 @@ impl From<wearfem::output::OutputError> for Failure {
     }
 }
 
-fn load(name: &str) -> Result<Problem, Failure> {
+fn load(name: &str, set: &[String]) -> Result<Problem, Failure> {
+    let (text, file) = read(name)?;
+    let overrides = set
+        .iter()
+        .map(|s| Override::parse(s))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| Failure::Input(e.to_string()))?;
+    Problem::with_overrides(&text, &file, &overrides).map_err(|e| Failure::Input(e.to_string()))
+}
+
+/// The text of a problem file or built-in example, and its name for messages.
+fn read(name: &str) -> Result<(String, String), Failure> {
     let (text, file) = if Path::new(name).exists() {
         let text = std::fs::read_to_string(name)
             .map_err(|e| Failure::Input(format!("{name}: cannot read: {e}")))?;
@@ -99,7 +149,7 @@ fn load(name: &str) -> Result<Problem, Failure> {
             names.join(", ")
         )));
     };
-    Problem::from_toml(&text, &file).map_err(|e| Failure::Input(e.to_string()))
+    Ok((text, file))
 }
 
 fn run(cli: Cli) -> Result<(), Failure> {
@@ -107,10 +157,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
         problem: None,
         out: PathBuf::from("out"),
         steps: None,
+        set: vec![],
     });
+    let quiet = cli.quiet;
     match command {
-        Command::Elastic { problem, out } => {
-            let p = load(&problem)?;
+        Command::Elastic { problem, out, set } => {
+            let p = load(&problem, &set)?;
             let summary = driver::elastic(&p)?;
             write_json(&out, "summary.json", &summary)?;
             println!(
@@ -121,8 +173,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 out.join("summary.json").display()
             );
         }
-        Command::Contact { problem, out } => {
-            let p = load(&problem)?;
+        Command::Contact { problem, out, set } => {
+            let p = load(&problem, &set)?;
             let (summary, contact, solution, info) = driver::contact(&p)?;
             wearfem::output::write_contact(&out, &summary, &contact, &solution)?;
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
@@ -135,17 +187,14 @@ fn run(cli: Cli) -> Result<(), Failure> {
             problem,
             out,
             steps,
+            set,
         } => {
             let name = problem.unwrap_or_else(|| "punch-b40".to_string());
-            let p = load(&name)?;
-            let total = steps.or(p.spec.wear.as_ref().map(|w| w.steps)).unwrap_or(0);
-            let mut last_report = std::time::Instant::now();
-            let result = driver::wear(&p, steps, |s| {
-                if last_report.elapsed().as_secs_f64() > 1.0 {
-                    eprintln!("step {}/{} (half period {})", s.step, total, s.half_period);
-                    last_report = std::time::Instant::now();
-                }
-            })?;
+            let p = load(&name, &set)?;
+            let bar = progress::StepBar::new(&p, steps, quiet);
+            let result = driver::wear(&p, steps, |s| bar.step(s));
+            bar.finish();
+            let result = result?;
             wearfem::output::write_wear(&out, &p, &result)?;
             let h = &result.history;
             // Report the last half cycle in the first step's direction ('+' unless a monotonic
@@ -169,8 +218,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 return Err(Failure::Compute(format!("{} contact solves failed and {} steps missed the implicit criterion (wear.criterion); results kept in {}", h.failed_solves, h.unconverged_steps, out.display())));
             }
         }
-        Command::Steady { problem, out } => {
-            let p = load(&problem)?;
+        Command::Steady { problem, out, set } => {
+            let p = load(&problem, &set)?;
             let (state, contact, seconds) = driver::steady(&p)?;
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds)?;
             let probes: Vec<String> = driver::contact_probes(&p, &contact)
@@ -195,6 +244,14 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); the last iterate was written. If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }
         }
+        Command::Sweep {
+            problem,
+            set,
+            steady: _,
+            run,
+            jobs,
+            out,
+        } => sweep(&problem, &set, run, jobs, &out, quiet)?,
         Command::Examples { action, name } => match (action.as_deref(), name) {
             (None, _) => {
                 for (n, text) in EXAMPLES {
@@ -216,6 +273,51 @@ fn run(cli: Cli) -> Result<(), Failure> {
             },
             _ => return Err(Failure::Input("usage: wearfem examples [show NAME]".into())),
         },
+    }
+    Ok(())
+}
+
+/// `wearfem sweep`: every variant is checked before any is solved; a variant whose input is
+/// bad stops the study with exit code 2 and nothing written.
+fn sweep(
+    name: &str,
+    set: &[String],
+    run: bool,
+    jobs: usize,
+    out: &Path,
+    quiet: bool,
+) -> Result<(), Failure> {
+    use wearfem::sweep::{self, Job, Sweep};
+    let (text, file) = read(name)?;
+    let input = |e: wearfem::problem::ProblemError| Failure::Input(e.to_string());
+    let variants = Sweep::parse(set)
+        .and_then(|s| s.prepare(&text, &file))
+        .map_err(input)?;
+    let job = if run { Job::Run } else { Job::Steady };
+    let threads = if jobs == 0 {
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    } else {
+        jobs
+    };
+    let start = std::time::Instant::now();
+    let bar = progress::count_bar(variants.len(), "variants", quiet);
+    let results = sweep::run(&variants, job, threads, &|_| bar.inc(1));
+    bar.finish_and_clear();
+    let seconds = start.elapsed().as_secs_f64();
+    let outcomes = results
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(Failure::from)?;
+    let title = &variants[0].problem.spec.title;
+    sweep::report::write(out, title, job, threads, &variants, &outcomes, seconds)?;
+    let failed = outcomes.iter().filter(|o| !o.converged).count();
+    println!(
+        "{file}: {} variants on {threads} threads in {seconds:.2} s; {failed} did not converge → {}",
+        variants.len(),
+        out.join("sweep.csv").display()
+    );
+    if failed > 0 {
+        return Err(Failure::Compute(format!("{failed} of {} variants did not converge (see the status column of {}); all rows were written", variants.len(), out.join("sweep.csv").display())));
     }
     Ok(())
 }

@@ -61,22 +61,22 @@ impl Problem {
 
     /// Parse and validate a problem file's text.
     pub fn from_toml(text: &str, file: &str) -> Result<Problem, ProblemError> {
-        let spec: ProblemSpec = toml::from_str(text).map_err(|e| {
-            // One line per error, whatever the parser's message looks like.
-            let message = e.message().split_whitespace().collect::<Vec<_>>().join(" ");
-            let key = match e.span() {
-                Some(span) => format!(
-                    "line {}",
-                    text[..span.start.min(text.len())].lines().count().max(1)
-                ),
-                None => "(file)".into(),
-            };
-            ProblemError {
-                file: file.into(),
-                key,
-                message,
-            }
-        })?;
+        Problem::with_overrides(text, file, &[])
+    }
+
+    /// Parse a problem file's text, apply `overrides` (`--set KEY=VALUE`, see
+    /// [`crate::overrides`] for the key syntax) and validate the result.
+    pub fn with_overrides(
+        text: &str,
+        file: &str,
+        overrides: &[crate::overrides::Override],
+    ) -> Result<Problem, ProblemError> {
+        let spec = crate::overrides::parse_spec(text, file, overrides)?;
+        Problem::from_spec(spec, file)
+    }
+
+    /// Validate a parsed problem file.
+    pub fn from_spec(spec: ProblemSpec, file: &str) -> Result<Problem, ProblemError> {
         let err = |key: &str, message: String| ProblemError {
             file: file.into(),
             key: key.into(),
