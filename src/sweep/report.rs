@@ -202,12 +202,16 @@ fn plot(
         0 => format!("{title}: parameter study"),
         m => format!("{title}: parameter study ({m} variants did not converge and are not drawn)"),
     };
-    let root = SVGBackend::new(path, (1400, 620)).into_drawing_area();
+    let legend_rows = outcomes.iter().filter(|o| o.converged).count().div_ceil(3);
+    let height = 560 + 24 * legend_rows as u32;
+    let root = SVGBackend::new(path, (1400, height)).into_drawing_area();
     root.fill(&WHITE).map_err(|x| e(&x))?;
     let root = root
         .titled(&heading, ("sans-serif", 22))
         .map_err(|x| e(&x))?;
-    let panels = root.split_evenly((1, 2));
+    // The legend goes below the panels, where it hides no curve.
+    let (upper, legend) = root.split_vertically(530);
+    let panels = upper.split_evenly((1, 2));
     let label = |v: &&Variant| {
         v.overrides
             .iter()
@@ -280,22 +284,24 @@ fn plot(
             .y_desc(y_label)
             .draw()
             .map_err(|x| e(&x))?;
-        for (k, (pts, v)) in points.into_iter().zip(&variants).enumerate() {
+        for (k, pts) in points.into_iter().enumerate() {
             let c = colour(k);
             chart
                 .draw_series(LineSeries::new(pts, c.stroke_width(2)))
-                .map_err(|x| e(&x))?
-                .label(label(v))
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
-                });
+                .map_err(|x| e(&x))?;
         }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 12))
-            .draw()
+    }
+    for (k, v) in variants.iter().enumerate() {
+        let (x, y) = (40 + 450 * (k % 3) as i32, 10 + 24 * (k / 3) as i32);
+        let c = colour(k);
+        legend
+            .draw(&PathElement::new(
+                vec![(x, y + 7), (x + 30, y + 7)],
+                c.stroke_width(3),
+            ))
+            .map_err(|x| e(&x))?;
+        legend
+            .draw(&Text::new(label(v), (x + 40, y), ("sans-serif", 14)))
             .map_err(|x| e(&x))?;
     }
     root.present().map_err(|x| e(&x))
