@@ -24,6 +24,7 @@
 //! | contact solve | [`complementarity`] | [`complementarity::ContactSolver`] |
 //! | sliding kinematics, extrapolation | [`kinematics`] | [`kinematics::ScheduleEntry`] |
 //! | wear integration | [`wear`] | [`wear::WearIntegrator`] |
+//! | wear input in engineering units | [`wear_units`] | [`wear_units::WearLawInput`] |
 //! | steady worn state, directly | [`steady`] | [`steady::steady_state`] |
 //! | jobs (elastic, contact, run, steady) | [`driver`] | [`driver::WearRun`] |
 //! | parameter studies | [`sweep`] | [`sweep::Sweep`] |
@@ -57,3 +58,4 @@ pub mod schema;
 pub mod steady;
 pub mod sweep;
 pub mod wear;
+pub mod wear_units;

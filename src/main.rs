@@ -196,6 +196,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
             bar.finish();
             let result = result?;
             wearfem::output::write_wear(&out, &p, &result)?;
+            if !result.records_past_end.is_empty() {
+                eprintln!(
+                    "note: wear.record asks for steps {:?}, past the last step of this run (--steps); they are listed as records_past_end in summary.json",
+                    result.records_past_end
+                );
+            }
             let h = &result.history;
             // Report the last half cycle in the first step's direction ('+' unless a monotonic
             // or reversed run starts with '-'), so the figure always exists.

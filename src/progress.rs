@@ -30,9 +30,12 @@ pub struct StepBar {
 impl StepBar {
     /// A bar for the run of `problem` (with `steps` replacing `wear.steps` when given).
     pub fn new(problem: &Problem, steps: Option<usize>, quiet: bool) -> StepBar {
-        let total = steps
-            .or(problem.spec.wear.as_ref().map(|w| w.steps))
-            .unwrap_or(0);
+        let resolved = problem
+            .spec
+            .wear
+            .as_ref()
+            .and_then(|w| wearfem::wear_units::resolve_duration(w).ok());
+        let total = steps.or(resolved.map(|w| w.steps)).unwrap_or(0);
         // The step records carry the probes on the contact body, in name order.
         let body = problem.spec.contact.as_ref().map(|c| c.body.as_str());
         let probe = problem
