@@ -158,7 +158,7 @@ pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
     };
     let value = spec.cycles.or(spec.distance).unwrap_or(f64::NAN);
     let half_periods = units.round();
-    if !(value.is_finite() && half_periods >= 1.0 && half_periods <= 1e12) {
+    if !(value.is_finite() && (1.0..=1e12).contains(&half_periods)) {
         return bad(
             key,
             format!("must give at least one half period (and at most 1e12), got {value}"),
