@@ -13,7 +13,10 @@ const DELAY: Duration = Duration::from_secs(1);
 fn hidden_bar(len: usize, template: &str) -> ProgressBar {
     let bar = ProgressBar::with_draw_target(Some(len as u64), ProgressDrawTarget::hidden());
     if let Ok(style) = ProgressStyle::with_template(template) {
-        bar.set_style(style.progress_chars("=> "));
+        let rate = |state: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+            let _ = write!(w, "{:.0}/s", state.per_sec());
+        };
+        bar.set_style(style.progress_chars("=> ").with_key("rate", rate));
     }
     bar
 }
@@ -47,7 +50,7 @@ impl StepBar {
         StepBar {
             bar: hidden_bar(
                 total,
-                "[{bar:30}] step {pos}/{len} {msg} {per_sec} (ETA {eta})",
+                "[{bar:30}] step {pos}/{len}, {msg}, {rate} (ETA {eta})",
             ),
             probe,
             start: Instant::now(),
