@@ -361,6 +361,19 @@ mod tests {
         }
     }
 
+    /// The overridden document is read from a TOML value, the plain file from text: both
+    /// readers must give the same schema for the same content, in every shipped example.
+    #[test]
+    fn a_no_op_override_changes_nothing() {
+        for (name, text) in crate::examples::EXAMPLES {
+            let plain = parse_spec(text, name, &[]).unwrap();
+            let same = Override::parse("title=\"x\"").unwrap();
+            let mut via_value = parse_spec(text, name, &[same]).unwrap();
+            via_value.title = plain.title.clone();
+            assert_eq!(format!("{plain:?}"), format!("{via_value:?}"), "{name}");
+        }
+    }
+
     #[test]
     fn no_overrides_reads_the_file_unchanged() {
         let spec = with(&[]).unwrap();
