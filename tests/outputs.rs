@@ -79,3 +79,26 @@ fn archard_k_and_cycles_give_the_equivalent_run() {
         }
     }
 }
+
+/// The progress bar is for a person at a terminal: with stderr piped (as here) a run that
+/// lasts well over the bar's one-second delay must print nothing on stderr.
+#[test]
+fn no_progress_bar_when_stderr_is_not_a_terminal() {
+    let dir = std::env::temp_dir().join(format!("wearfem-bar-{}", std::process::id()));
+    let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .args([
+            "run",
+            "brake",
+            "--steps",
+            "60000",
+            "--set",
+            "wear.record=[]",
+        ])
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&out.stderr), "");
+    let _ = std::fs::remove_dir_all(&dir);
+}
