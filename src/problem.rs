@@ -222,11 +222,18 @@ impl Problem {
                 EdgeShape::Straight,
                 EdgeShape::Straight,
             ];
-            for arc in &bs.arcs {
+            for (i, arc) in bs.arcs.iter().enumerate() {
                 if arc.edge > 3 {
                     return Err(
                         self.error(key("arcs"), format!("edge must be 0..=3, got {}", arc.edge))
                     );
+                }
+                if bs.arcs[..i].iter().any(|other| other.edge == arc.edge) {
+                    // The later one would silently replace the earlier.
+                    return Err(self.error(
+                        key(&format!("arcs[{i}].edge")),
+                        format!("edge {} already has an arc", arc.edge),
+                    ));
                 }
                 shapes[arc.edge] = EdgeShape::ArcAbout(arc.center);
             }
@@ -242,8 +249,18 @@ impl Problem {
                     format!("coordinates (and arc centres) must be finite and within ±{MAX_COORDINATE:e} mm"),
                 ));
             }
-            let block = Block::new(bs.corners, shapes)
-                .map_err(|e| self.error(key("corners"), e.to_string()))?;
+            let block = Block::new(bs.corners, shapes).map_err(|e| {
+                use crate::geometry::GeometryError::*;
+                // An arc that cannot pass through its corners is the arc's fault: name it.
+                let arc = match e {
+                    ArcRadiusMismatch { edge, .. }
+                    | DegenerateArc { edge, .. }
+                    | AmbiguousArc { edge, .. } => bs.arcs.iter().rposition(|a| a.edge == edge),
+                    _ => None,
+                };
+                let field = arc.map_or("corners".into(), |i| format!("arcs[{i}].center"));
+                self.error(key(&field), e.to_string())
+            })?;
             let material = material_names
                 .iter()
                 .position(|m| **m == bs.material)
