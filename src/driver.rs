@@ -130,6 +130,66 @@ pub fn contact_probes(problem: &Problem, contact: &CondensedContact) -> Vec<(Str
         .collect()
 }
 
+/// Every probe must be on the contact edge of the contact body: `contact`, `run` and `steady`
+/// report the pressure at the contact point nearest to a probe, which is only the pressure
+/// *at the probe* when it lies on that edge, within half the widest spacing of the points.
+pub fn check_contact_probes(
+    problem: &Problem,
+    contact: &CondensedContact,
+) -> Result<(), ProblemError> {
+    let Some(c) = problem.spec.contact.as_ref() else {
+        return Ok(());
+    };
+    let x = &contact.points.x;
+    let spacing = x.windows(2).map(|w| dist(w[0], w[1])).fold(0.0, f64::max);
+    for (name, probe) in &problem.spec.probes {
+        let key = format!("probes.{name}");
+        if probe.body != c.body {
+            return Err(problem.error(
+                format!("{key}.body"),
+                format!("is on body \"{}\", but contact, run and steady report pressures on the contact body \"{}\" only; remove the probe or move it to the contact edge", probe.body, c.body),
+            ));
+        }
+        let nearest = x
+            .iter()
+            .map(|&p| dist(p, probe.at))
+            .fold(f64::INFINITY, f64::min);
+        if nearest > 0.5 * spacing * (1.0 + 1e-9) {
+            return Err(problem.error(
+                format!("{key}.at"),
+                format!(
+                    "({}, {}) is not on the contact edge \"{}\" (the nearest contact point is {nearest:.4} mm away); contact, run and steady report pressures on that edge",
+                    probe.at[0], probe.at[1], c.edge
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// `wear.shape_zero_at` must lie within the x range of the contact points: outside it, the
+/// shift would be taken at the nearest point, not where the file says.
+fn check_shape_zero(problem: &Problem, contact: &CondensedContact) -> Result<(), ProblemError> {
+    let Some(x0) = problem.spec.wear.as_ref().and_then(|w| w.shape_zero_at) else {
+        return Ok(());
+    };
+    let (lo, hi) = contact
+        .points
+        .x
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p[0]), b.max(p[0]))
+        });
+    let slack = 1e-9 * (hi - lo).abs().max(1.0);
+    if !(x0 >= lo - slack && x0 <= hi + slack) {
+        return Err(problem.error(
+            "wear.shape_zero_at",
+            format!("x = {x0} mm is outside the contact edge's x range [{lo}, {hi}] mm"),
+        ));
+    }
+    Ok(())
+}
+
 fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
@@ -151,6 +211,7 @@ pub fn contact(
 ) -> Result<(Value, CondensedContact, ContactSolution, SolveInfo), JobError> {
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
+    check_contact_probes(problem, &contact)?;
     let setup = start.elapsed().as_secs_f64();
     let mut solver = ContactSolver::new(&contact, method(problem)?);
     let (solution, info) = solver.solve(&contact.points.initial_gap, direction(problem)?);
@@ -191,6 +252,10 @@ pub struct WearRun {
     pub setup_seconds: f64,
     /// Seconds spent integrating.
     pub run_seconds: f64,
+    /// Steps of `wear.record` past the end of a run shortened by the `steps` argument.
+    pub records_past_end: Vec<usize>,
+    /// Sliding distance of one half period (monotonic: of one step unit), mm.
+    pub sliding_per_half_period: f64,
 }
 
 /// Run the wear integration of `problem` (optionally overriding the number of steps).
@@ -205,8 +270,15 @@ pub fn wear(
         .clone()
         .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
     let mut spec = spec;
+    let mut records_past_end = Vec::new();
     if let Some(n) = steps {
+        // `steps` replaces the file's duration; the snapshots it asks for past the new end are
+        // reported in the result (`WearRun::records_past_end`), not dropped in silence.
         spec.steps = n;
+        spec.cycles = None;
+        spec.distance = None;
+        records_past_end = spec.record.iter().copied().filter(|&r| r > n).collect();
+        spec.record.retain(|&r| r <= n);
     }
     let mut integrator =
         WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
@@ -228,6 +300,8 @@ pub fn wear(
     }
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
+    check_contact_probes(problem, &contact)?;
+    check_shape_zero(problem, &contact)?;
     let mut solver = ContactSolver::new(&contact, method(problem)?);
     let setup_seconds = start.elapsed().as_secs_f64();
     let probes = contact_probes(problem, &contact);
@@ -247,19 +321,35 @@ pub fn wear(
         probes,
         setup_seconds,
         run_seconds,
+        records_past_end,
+        sliding_per_half_period: integrator.sliding_per_half_period(),
     })
 }
 
 impl WearRun {
+    /// Whether every step slid the same way (monotonic sliding, or a one-step run).
+    pub fn is_monotonic(&self) -> bool {
+        let h = &self.history.steps;
+        h.windows(2).all(|w| w[0].direction == w[1].direction)
+    }
+
     /// The summary JSON of the run.
     pub fn summary(&self, problem: &Problem) -> Value {
         let h = &self.history;
+        let monotonic = self.is_monotonic();
         let steps: Vec<Value> = h
             .steps
             .iter()
             .map(|s| {
                 let probes: serde_json::Map<String, Value> = self.probes.iter().zip(&s.probes).map(|((n, _), v)| (n.clone(), number(*v))).collect();
-                json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "k": s.k, "iterations": s.iterations, "criterion": number(s.criterion), "dissipation": number(s.dissipation), "delta_w": number(s.delta_w), "probes": probes })
+                {
+                    let mut step = json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "k": s.k, "iterations": s.iterations, "criterion": number(s.criterion), "dissipation": number(s.dissipation), "delta_w": number(s.delta_w), "probes": probes });
+                    if monotonic {
+                        // δw compares the two half cycles of a period: none in one direction.
+                        step.as_object_mut().map(|o| o.remove("delta_w"));
+                    }
+                    step
+                }
             })
             .collect();
         let p_sum: Vec<f64> = h
@@ -268,6 +358,7 @@ impl WearRun {
             .zip(&h.p_minus)
             .map(|(a, b)| a + b)
             .collect();
+        let half_periods = h.steps.last().map_or(0, |s| s.half_period);
         let mut summary = json!({
             "title": problem.spec.title,
             "points": self.contact.len(),
@@ -287,7 +378,18 @@ impl WearRun {
 
             "setup_seconds": self.setup_seconds,
             "run_seconds": self.run_seconds,
+            "sliding_distance_m": number(half_periods as f64 * self.sliding_per_half_period / 1000.0),
         });
+        if monotonic {
+            // One direction only: there is no '−' pressure and no sum of the two.
+            if let Some(f) = summary["final"].as_object_mut() {
+                f.remove("p_minus");
+                f.remove("p_sum");
+            }
+        }
+        if !self.records_past_end.is_empty() {
+            summary["records_past_end"] = json!(self.records_past_end);
+        }
         match &h.steady_distance {
             Some(d) => {
                 summary["steady_distance"] = json!({
@@ -327,6 +429,8 @@ pub fn steady(
         WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
+    check_contact_probes(problem, &contact)?;
+    check_shape_zero(problem, &contact)?;
     let state = crate::steady::steady_state(
         &contact,
         &integrator.half_period_wear(),

@@ -18,14 +18,17 @@
 //! | elasticity, condensation, factorisation | [`elasticity`] | [`elasticity::ElasticBody`] |
 //! | loads, post-processing | [`loads`], [`fields`] | [`loads::Traction`] |
 //! | problem files: schema, validation, model | [`schema`], [`problem`] | [`problem::Problem`] |
+//! | overrides (`--set KEY=VALUE`) | [`overrides`] | [`overrides::Override`] |
 //! | contact condensation | [`contact`] | [`contact::CondensedContact`] |
 //! | small dense LU, Lemke's method | [`dense`], [`lemke`] | [`dense::DenseLu`] |
 //! | contact solve | [`complementarity`] | [`complementarity::ContactSolver`] |
 //! | sliding kinematics, extrapolation | [`kinematics`] | [`kinematics::ScheduleEntry`] |
 //! | wear integration | [`wear`] | [`wear::WearIntegrator`] |
+//! | wear input in engineering units | [`wear_units`] | [`wear_units::WearLawInput`] |
 //! | steady worn state, directly | [`steady`] | [`steady::steady_state`] |
 //! | jobs (elastic, contact, run, steady) | [`driver`] | [`driver::WearRun`] |
 //! | deformed bodies behind a contact solve | [`deformation`] | [`deformation::contact_fields`] |
+//! | parameter studies | [`sweep`] | [`sweep::Sweep`] |
 //! | output files and plots | [`output`], [`plot`] | [`output::write_wear`] |
 //! | ParaView files | [`vtk`] | [`vtk::write_run`] |
 //! | validation report | [`validate`] | [`validate::run`] |
@@ -51,11 +54,14 @@ pub mod loads;
 pub mod material;
 pub mod mesh;
 pub mod output;
+pub mod overrides;
 pub mod plot;
 pub mod problem;
 pub mod quadrature;
 pub mod schema;
 pub mod steady;
+pub mod sweep;
 pub mod validate;
 pub mod vtk;
 pub mod wear;
+pub mod wear_units;

@@ -7,7 +7,10 @@ use std::process::ExitCode;
 use wearfem::driver::{self, JobError};
 use wearfem::examples::EXAMPLES;
 use wearfem::output::write_json;
+use wearfem::overrides::Override;
 use wearfem::problem::Problem;
+
+mod progress;
 
 #[derive(Parser)]
 #[command(
@@ -18,6 +21,9 @@ use wearfem::problem::Problem;
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// Show no progress bar (it is also hidden when stderr is not a terminal).
+    #[arg(long, global = true)]
+    quiet: bool,
 }
 
 #[derive(Subcommand)]
@@ -32,6 +38,9 @@ enum Command {
         /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
         #[arg(long)]
         vtk: bool,
+        /// Override a key of the problem file: KEY=VALUE, e.g. contact.friction=0.3 (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
     },
     /// One contact solve of the initial configuration (no wear); writes DIR/summary.json.
     Contact {
@@ -43,6 +52,9 @@ enum Command {
         /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
         #[arg(long)]
         vtk: bool,
+        /// Override a key of the problem file: KEY=VALUE, e.g. contact.friction=0.3 (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
     },
     /// Integrate wear over the problem's steps; writes summary.json, history.csv, final.csv.
     Run {
@@ -57,6 +69,9 @@ enum Command {
         /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
         #[arg(long)]
         vtk: bool,
+        /// Override a key of the problem file: KEY=VALUE, e.g. contact.friction=0.3 (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
     },
     /// Compute the steady worn state directly (no time integration); writes summary.json,
     /// steady.csv and pressure.svg, shape.svg.
@@ -69,6 +84,9 @@ enum Command {
         /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
         #[arg(long)]
         vtk: bool,
+        /// Override a key of the problem file: KEY=VALUE, e.g. contact.friction=0.3 (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
     },
     /// Rerun every validation claim (closed forms, the paper's numbers, steady vs transient);
     /// prints the table, writes DIR/validation.md and DIR/validation.json, exits 1 on a FAIL.
@@ -86,6 +104,27 @@ enum Command {
         /// Replace the reference value of one check, ID=VALUE (tests the failure path).
         #[arg(long, hide = true)]
         perturb: Option<String>,
+    },
+    /// A parameter study: the Cartesian product of the --set lists, solved in parallel; writes
+    /// sweep.csv (one row per variant), sweep.json and sweep.svg.
+    Sweep {
+        /// Problem file (TOML) or built-in example name.
+        problem: String,
+        /// KEY=[V1, V2, …]: the values of one key (a TOML array; repeatable, first key slowest).
+        #[arg(long = "set", value_name = "KEY=[V1, V2, …]", required = true)]
+        set: Vec<String>,
+        /// Solve the steady state of each variant (the default).
+        #[arg(long, conflicts_with = "run")]
+        steady: bool,
+        /// Run the wear integration of each variant.
+        #[arg(long)]
+        run: bool,
+        /// Variants solved at once (default: one per core).
+        #[arg(short = 'j', long = "jobs", default_value_t = 0)]
+        jobs: usize,
+        /// Output directory.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
     },
     /// List the built-in examples, or print one (`wearfem examples show NAME`).
     Examples {
@@ -129,7 +168,18 @@ impl From<wearfem::output::OutputError> for Failure {
     }
 }
 
-fn load(name: &str) -> Result<Problem, Failure> {
+fn load(name: &str, set: &[String]) -> Result<Problem, Failure> {
+    let (text, file) = read(name)?;
+    let overrides = set
+        .iter()
+        .map(|s| Override::parse(s))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| Failure::Input(e.to_string()))?;
+    Problem::with_overrides(&text, &file, &overrides).map_err(|e| Failure::Input(e.to_string()))
+}
+
+/// The text of a problem file or built-in example, and its name for messages.
+fn read(name: &str) -> Result<(String, String), Failure> {
     let (text, file) = if Path::new(name).exists() {
         let text = std::fs::read_to_string(name)
             .map_err(|e| Failure::Input(format!("{name}: cannot read: {e}")))?;
@@ -143,7 +193,7 @@ fn load(name: &str) -> Result<Problem, Failure> {
             names.join(", ")
         )));
     };
-    Problem::from_toml(&text, &file).map_err(|e| Failure::Input(e.to_string()))
+    Ok((text, file))
 }
 
 fn run(cli: Cli) -> Result<(), Failure> {
@@ -152,10 +202,17 @@ fn run(cli: Cli) -> Result<(), Failure> {
         out: PathBuf::from("out"),
         steps: None,
         vtk: false,
+        set: vec![],
     });
+    let quiet = cli.quiet;
     match command {
-        Command::Elastic { problem, out, vtk } => {
-            let p = load(&problem)?;
+        Command::Elastic {
+            problem,
+            out,
+            vtk,
+            set,
+        } => {
+            let p = load(&problem, &set)?;
             let summary = driver::elastic(&p)?;
             write_json(&out, "summary.json", &summary)?;
             if wants_vtk(vtk, &p) {
@@ -169,8 +226,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 out.join("summary.json").display()
             );
         }
-        Command::Contact { problem, out, vtk } => {
-            let p = load(&problem)?;
+        Command::Contact {
+            problem,
+            out,
+            vtk,
+            set,
+        } => {
+            let p = load(&problem, &set)?;
             let (summary, contact, solution, info) = driver::contact(&p)?;
             wearfem::output::write_contact(
                 &out,
@@ -194,20 +256,23 @@ fn run(cli: Cli) -> Result<(), Failure> {
             out,
             steps,
             vtk,
+            set,
         } => {
             let name = problem.unwrap_or_else(|| "punch-b40".to_string());
-            let p = load(&name)?;
-            let total = steps.or(p.spec.wear.as_ref().map(|w| w.steps)).unwrap_or(0);
-            let mut last_report = std::time::Instant::now();
-            let result = driver::wear(&p, steps, |s| {
-                if last_report.elapsed().as_secs_f64() > 1.0 {
-                    eprintln!("step {}/{} (half period {})", s.step, total, s.half_period);
-                    last_report = std::time::Instant::now();
-                }
-            })?;
+            let p = load(&name, &set)?;
+            let bar = progress::StepBar::new(&p, steps, quiet);
+            let result = driver::wear(&p, steps, |s| bar.step(s));
+            bar.finish();
+            let result = result?;
             wearfem::output::write_wear(&out, &p, &result)?;
             if wants_vtk(vtk, &p) {
                 wearfem::vtk::write_run(&out, &p, &result)?;
+            }
+            if !result.records_past_end.is_empty() {
+                eprintln!(
+                    "note: wear.record asks for steps {:?}, past the last step of this run (--steps); they are listed as records_past_end in summary.json",
+                    result.records_past_end
+                );
             }
             let h = &result.history;
             // Report the last half cycle in the first step's direction ('+' unless a monotonic
@@ -248,8 +313,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 return Err(Failure::Compute(format!("{} steps missed their iteration tolerance (wear.tolerance) and {} fixed-point steps kept a shape whose pressure wears it differently by more than {} % (the shape oscillates; use wear.scheme = \"implicit\"); results kept in {}", h.unconverged_steps, h.oscillating_steps, 100.0 * wearfem::wear::OSCILLATION_LIMIT, out.display())));
             }
         }
-        Command::Steady { problem, out, vtk } => {
-            let p = load(&problem)?;
+        Command::Steady {
+            problem,
+            out,
+            vtk,
+            set,
+        } => {
+            let p = load(&problem, &set)?;
             let (state, contact, seconds) = driver::steady(&p)?;
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds)?;
             if wants_vtk(vtk, &p) {
@@ -283,6 +353,14 @@ fn run(cli: Cli) -> Result<(), Failure> {
             update_doc,
             perturb,
         } => validate(quick, &out, update_doc.as_deref(), perturb.as_deref())?,
+        Command::Sweep {
+            problem,
+            set,
+            steady: _,
+            run,
+            jobs,
+            out,
+        } => sweep(&problem, &set, run, jobs, &out, quiet)?,
         Command::Examples { action, name } => match (action.as_deref(), name) {
             (None, _) => {
                 for (n, text) in EXAMPLES {
@@ -359,6 +437,51 @@ fn validate(
             report.failures(),
             report.checks.len()
         )));
+    }
+    Ok(())
+}
+
+/// `wearfem sweep`: every variant is checked before any is solved; a variant whose input is
+/// bad stops the study with exit code 2 and nothing written.
+fn sweep(
+    name: &str,
+    set: &[String],
+    run: bool,
+    jobs: usize,
+    out: &Path,
+    quiet: bool,
+) -> Result<(), Failure> {
+    use wearfem::sweep::{self, Job, Sweep};
+    let (text, file) = read(name)?;
+    let input = |e: wearfem::problem::ProblemError| Failure::Input(e.to_string());
+    let variants = Sweep::parse(set)
+        .and_then(|s| s.prepare(&text, &file))
+        .map_err(input)?;
+    let job = if run { Job::Run } else { Job::Steady };
+    let threads = if jobs == 0 {
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    } else {
+        jobs
+    };
+    let start = std::time::Instant::now();
+    let bar = progress::count_bar(variants.len(), "variants", quiet);
+    let results = sweep::run(&variants, job, threads, &|_| bar.inc(1));
+    bar.finish_and_clear();
+    let seconds = start.elapsed().as_secs_f64();
+    let outcomes = results
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(Failure::from)?;
+    let title = &variants[0].problem.spec.title;
+    sweep::report::write(out, title, job, threads, &variants, &outcomes, seconds)?;
+    let failed = outcomes.iter().filter(|o| !o.converged).count();
+    println!(
+        "{file}: {} variants on {threads} threads in {seconds:.2} s; {failed} did not converge → {}",
+        variants.len(),
+        out.join("sweep.csv").display()
+    );
+    if failed > 0 {
+        return Err(Failure::Compute(format!("{failed} of {} variants did not converge (see the status column of {}); all rows were written", variants.len(), out.join("sweep.csv").display())));
     }
     Ok(())
 }

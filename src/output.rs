@@ -113,23 +113,24 @@ impl Profiles<'_> {
             .zip(p_minus)
             .map(|(a, b)| a + b)
             .collect();
+        // Monotonic sliding has one pressure: no '−' or summed columns.
+        let two = self.p_minus.is_some();
         let rows: Vec<Vec<Value>> = (0..self.x.len())
             .map(|i| {
-                vec![
-                    number(self.x[i]),
-                    number(self.p_plus[i]),
-                    number(p_minus[i]),
-                    number(p_sum[i]),
-                    number(self.shape[i]),
-                ]
+                let mut row = vec![number(self.x[i]), number(self.p_plus[i])];
+                if two {
+                    row.extend([number(p_minus[i]), number(p_sum[i])]);
+                }
+                row.push(number(self.shape[i]));
+                row
             })
             .collect();
-        write_csv(
-            dir,
-            csv_name,
-            &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"],
-            &rows,
-        )?;
+        let header: &[&str] = if two {
+            &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"]
+        } else {
+            &["x_mm", "p_plus_MPa", "shape_mm"]
+        };
+        write_csv(dir, csv_name, header, &rows)?;
         let profile = |v: &[f64], scale: f64| {
             self.x
                 .iter()
@@ -199,6 +200,11 @@ pub fn write_wear(
     .iter()
     .map(|s| s.to_string())
     .collect();
+    let monotonic = run.is_monotonic();
+    if monotonic {
+        // δw compares the two half cycles of a period: there is none in one direction.
+        header.pop();
+    }
     header.extend(run.probes.iter().map(|(n, _)| format!("p_{n}_MPa")));
     let rows: Vec<Vec<Value>> = h
         .steps
@@ -212,8 +218,10 @@ pub fn write_wear(
                 json!(s.iterations),
                 number(s.criterion),
                 number(s.dissipation),
-                number(s.delta_w),
             ];
+            if !monotonic {
+                r.push(number(s.delta_w));
+            }
             r.extend(s.probes.iter().map(|&v| number(v)));
             r
         })
@@ -221,7 +229,6 @@ pub fn write_wear(
     let header_refs: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
     write_csv(dir, "history.csv", &header_refs, &rows)?;
     let x: Vec<f64> = run.contact.points.x.iter().map(|p| p[0]).collect();
-    let monotonic = h.steps.iter().all(|s| s.direction == "+");
     let profiles = Profiles {
         x: &x,
         p_plus: &h.p_plus,
@@ -318,6 +325,14 @@ pub fn write_steady(
         "rigid_wear_per_period": named(&contact.rigid_names, &state.rigid_wear),
         "seconds": seconds,
     });
+    let mut summary = summary;
+    if p_minus.is_none() {
+        // Monotonic sliding has one pressure: no '−' or summed profiles.
+        if let Some(s) = summary.as_object_mut() {
+            s.remove("p_minus");
+            s.remove("p_sum");
+        }
+    }
     write_json(dir, "summary.json", &summary)?;
     Profiles {
         x: &x,

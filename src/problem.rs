@@ -61,22 +61,22 @@ impl Problem {
 
     /// Parse and validate a problem file's text.
     pub fn from_toml(text: &str, file: &str) -> Result<Problem, ProblemError> {
-        let spec: ProblemSpec = toml::from_str(text).map_err(|e| {
-            // One line per error, whatever the parser's message looks like.
-            let message = e.message().split_whitespace().collect::<Vec<_>>().join(" ");
-            let key = match e.span() {
-                Some(span) => format!(
-                    "line {}",
-                    text[..span.start.min(text.len())].lines().count().max(1)
-                ),
-                None => "(file)".into(),
-            };
-            ProblemError {
-                file: file.into(),
-                key,
-                message,
-            }
-        })?;
+        Problem::with_overrides(text, file, &[])
+    }
+
+    /// Parse a problem file's text, apply `overrides` (`--set KEY=VALUE`, see
+    /// [`crate::overrides`] for the key syntax) and validate the result.
+    pub fn with_overrides(
+        text: &str,
+        file: &str,
+        overrides: &[crate::overrides::Override],
+    ) -> Result<Problem, ProblemError> {
+        let spec = crate::overrides::parse_spec(text, file, overrides)?;
+        Problem::from_spec(spec, file)
+    }
+
+    /// Validate a parsed problem file.
+    pub fn from_spec(spec: ProblemSpec, file: &str) -> Result<Problem, ProblemError> {
         let err = |key: &str, message: String| ProblemError {
             file: file.into(),
             key: key.into(),
@@ -222,11 +222,18 @@ impl Problem {
                 EdgeShape::Straight,
                 EdgeShape::Straight,
             ];
-            for arc in &bs.arcs {
+            for (i, arc) in bs.arcs.iter().enumerate() {
                 if arc.edge > 3 {
                     return Err(
                         self.error(key("arcs"), format!("edge must be 0..=3, got {}", arc.edge))
                     );
+                }
+                if bs.arcs[..i].iter().any(|other| other.edge == arc.edge) {
+                    // The later one would silently replace the earlier.
+                    return Err(self.error(
+                        key(&format!("arcs[{i}].edge")),
+                        format!("edge {} already has an arc", arc.edge),
+                    ));
                 }
                 shapes[arc.edge] = EdgeShape::ArcAbout(arc.center);
             }
@@ -242,8 +249,18 @@ impl Problem {
                     format!("coordinates (and arc centres) must be finite and within ±{MAX_COORDINATE:e} mm"),
                 ));
             }
-            let block = Block::new(bs.corners, shapes)
-                .map_err(|e| self.error(key("corners"), e.to_string()))?;
+            let block = Block::new(bs.corners, shapes).map_err(|e| {
+                use crate::geometry::GeometryError::*;
+                // An arc that cannot pass through its corners is the arc's fault: name it.
+                let arc = match e {
+                    ArcRadiusMismatch { edge, .. }
+                    | DegenerateArc { edge, .. }
+                    | AmbiguousArc { edge, .. } => bs.arcs.iter().rposition(|a| a.edge == edge),
+                    _ => None,
+                };
+                let field = arc.map_or("corners".into(), |i| format!("arcs[{i}].center"));
+                self.error(key(&field), e.to_string())
+            })?;
             let material = material_names
                 .iter()
                 .position(|m| **m == bs.material)

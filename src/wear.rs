@@ -19,22 +19,17 @@ pub use adaptive::AdaptiveSpec;
 pub use outcome::{non_rigid_part, steady_distance, SteadyDistance, StopReason};
 use serde::{Deserialize, Serialize};
 
-/// Wear law parameters of one body: ẇ = β̃ pᵇ vᵃ (mm/s with p in MPa and v in mm/s).
+/// Wear law parameters of one body: ẇ = β̃ pᵇ vᵃ (mm/s with p in MPa and v in mm/s). A file
+/// may give Archard's k or K with a hardness instead of β̃ ([`crate::wear_units`]).
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq)]
-#[serde(deny_unknown_fields)]
+#[serde(try_from = "crate::wear_units::WearLawInput")]
 pub struct WearLaw {
     /// β̃ = β μᵇ, mm^(1−a) s^(a−1) MPa^(−b); 0 switches wear of this body off.
     pub beta: f64,
-    /// Velocity exponent a (> 0).
-    #[serde(default = "one")]
+    /// Velocity exponent a (> 0; default 1).
     pub a: f64,
-    /// Pressure exponent b (> 0).
-    #[serde(default = "one")]
+    /// Pressure exponent b (> 0; default 1).
     pub b: f64,
-}
-
-fn one() -> f64 {
-    1.0
 }
 
 /// `[wear]` section of a problem file.
@@ -60,8 +55,13 @@ pub struct WearSpec {
     /// Monotonic: time per step, s.
     #[serde(default)]
     pub step_time: f64,
-    /// Number of steps n.
+    /// Number of steps n (0: not given; then `cycles` or `distance` sets it).
+    #[serde(default)]
     pub steps: usize,
+    /// Duration in cycles (reciprocating), instead of `steps`.
+    pub cycles: Option<f64>,
+    /// Duration as sliding distance, m, instead of `steps`.
+    pub distance: Option<f64>,
     /// Extrapolation schedule (default: the paper's k = 1, 5, 10 after steps 50, 100).
     pub extrapolation: Option<Vec<ScheduleEntry>>,
     /// Error-controlled extrapolation instead of a schedule; the run then stops at the steady
@@ -211,6 +211,7 @@ pub struct WearIntegrator {
 impl WearIntegrator {
     /// Validate `spec`; the error names the key.
     pub fn new(spec: &WearSpec) -> Result<WearIntegrator, (String, String)> {
+        let spec = &crate::wear_units::resolve_duration(spec)?;
         let bad = |k: &str, m: String| Err((format!("wear.{k}"), m));
         let mut laws = Vec::new();
         for (name, law) in [("body1", spec.body1), ("body2", spec.body2)] {
@@ -294,6 +295,13 @@ impl WearIntegrator {
             return bad(
                 "steps",
                 format!("must be 1 … {MAX_STEPS}, got {}", spec.steps),
+            );
+        }
+        if let Some(r) = spec.record.iter().find(|&&r| r == 0 || r > spec.steps) {
+            // A snapshot outside the run would silently be missing from the output.
+            return bad(
+                "record",
+                format!("step {r} is outside the run's steps 1 … {}", spec.steps),
             );
         }
         if !(1..=10_000).contains(&spec.max_iterations) {
@@ -388,6 +396,11 @@ impl WearIntegrator {
     /// Whether the sliding is monotonic (one direction) rather than reciprocating.
     pub fn is_monotonic(&self) -> bool {
         self.spec.sliding == "monotonic"
+    }
+
+    /// Sliding distance of one half period (monotonic: of one step unit, `step_time`), mm.
+    pub fn sliding_per_half_period(&self) -> f64 {
+        self.sliding(1.0)
     }
 
     /// Sliding integral ∫|v|ᵃ dτ of one half period (or one monotonic step).

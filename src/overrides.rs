@@ -1,0 +1,382 @@
+//! Overrides: `KEY=VALUE` changes to a problem file, as given by `--set` on the command line
+//! or by a parameter study ([`crate::sweep`]).
+//!
+//! An override is applied to the parsed TOML document *before* it is read into the schema, so
+//! an overridden value passes exactly the checks of a value written in the file: a key that
+//! the schema does not know, or a value of the wrong type, is an error naming the key.
+//!
+//! **Key syntax.** A dotted path of TOML bare keys, with `[i]` (from 0, file order) to pick
+//! an entry of an array of tables: `plate.pin`, `contact.friction`, `wear.body1.b`,
+//! `materials.steel.young`, `bodies[1].blocks[0].u`, `bodies[0].tractions[0].normal`.
+//! Missing tables on the way are created (`wear.body2.beta` adds a `body2` table), so a key
+//! the file omits but the schema allows can be set; the finished table must then still be
+//! complete (`missing field …` otherwise).
+//!
+//! **Value syntax.** A TOML value as it would be written after `=` in the file: `0.3`,
+//! `[1100, 140]`, `"lemke"`, `{ beta = 1e-8, b = 1.2 }`. A bare word that is not TOML
+//! (`lemke`) is taken as a string, to spare the shell quoting.
+
+use crate::problem::ProblemError;
+use crate::schema::ProblemSpec;
+
+/// One override: a dotted key path and the TOML value to put there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Override {
+    /// The key as written (`bodies[1].blocks[0].u`), for messages and output columns.
+    pub key: String,
+    /// The value.
+    pub value: toml::Value,
+    path: Vec<Segment>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Segment {
+    Key(String),
+    Index(usize),
+}
+
+/// Where override errors that concern the command line itself (not a file) are reported.
+pub const SET: &str = "--set";
+
+fn set_error(key: &str, message: impl Into<String>) -> ProblemError {
+    ProblemError {
+        file: SET.into(),
+        key: key.into(),
+        message: message.into(),
+    }
+}
+
+impl Override {
+    /// An override of `key` with `value`; the key's syntax is checked here, its existence in
+    /// the schema when it is applied.
+    pub fn new(key: &str, value: toml::Value) -> Result<Override, ProblemError> {
+        Ok(Override {
+            key: key.to_string(),
+            value,
+            path: parse_key(key)?,
+        })
+    }
+
+    /// Parse `KEY=VALUE` (the text of one `--set`).
+    pub fn parse(text: &str) -> Result<Override, ProblemError> {
+        let (key, value) = split(text)?;
+        Override::new(key, parse_value(value))
+    }
+
+    /// The value as TOML text (`[1100, 140]`, `0.25`), for output columns.
+    pub fn value_text(&self) -> String {
+        value_text(&self.value)
+    }
+}
+
+/// Split `KEY=VALUE` at the first `=`.
+pub fn split(text: &str) -> Result<(&str, &str), ProblemError> {
+    match text.split_once('=') {
+        Some((key, value)) if !key.trim().is_empty() && !value.trim().is_empty() => {
+            Ok((key.trim(), value.trim()))
+        }
+        _ => Err(set_error(
+            text,
+            "expected KEY=VALUE, for example contact.friction=0.3",
+        )),
+    }
+}
+
+/// A TOML value from its text; a bare word that is not TOML becomes a string.
+pub fn parse_value(text: &str) -> toml::Value {
+    match toml::from_str::<toml::Table>(&format!("value = {text}")) {
+        Ok(mut table) => table
+            .remove("value")
+            .unwrap_or(toml::Value::String(text.into())),
+        Err(_) => toml::Value::String(text.into()),
+    }
+}
+
+/// A TOML value as inline text.
+pub fn value_text(value: &toml::Value) -> String {
+    match value {
+        toml::Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
+fn parse_key(key: &str) -> Result<Vec<Segment>, ProblemError> {
+    let bad = |why: &str| {
+        set_error(
+            key,
+            format!("{why}; a key is a dotted path such as plate.pin or bodies[1].blocks[0].u"),
+        )
+    };
+    let mut path = Vec::new();
+    for part in key.split('.') {
+        let (name, mut rest) = part.split_at(part.find('[').unwrap_or(part.len()));
+        let bare = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-';
+        if name.is_empty() || !name.chars().all(bare) {
+            return Err(bad(&format!("\"{part}\" is not a key name")));
+        }
+        path.push(Segment::Key(name.to_string()));
+        while !rest.is_empty() {
+            let close = rest.find(']').ok_or_else(|| bad("unclosed ["))?;
+            let index = rest[1..close]
+                .trim()
+                .parse::<usize>()
+                .map_err(|_| bad(&format!("\"{}\" is not an index", &rest[..=close])))?;
+            path.push(Segment::Index(index));
+            rest = &rest[close + 1..];
+            if !(rest.is_empty() || rest.starts_with('[')) {
+                return Err(bad(&format!("unexpected \"{rest}\" after an index")));
+            }
+        }
+    }
+    Ok(path)
+}
+
+/// Put `o.value` at `o`'s path in `table`; the error says why the path cannot be followed.
+fn apply(table: &mut toml::Table, o: &Override) -> Result<(), String> {
+    let Some((last, inner)) = o.path.split_last() else {
+        return Err("empty key".into());
+    };
+    let mut here = TableOrValue::Table(table);
+    let mut walked = String::new();
+    for segment in inner {
+        here = here.step(segment, &mut walked, true)?;
+    }
+    here.set(last, o.value.clone(), &walked)
+}
+
+enum TableOrValue<'a> {
+    Table(&'a mut toml::Table),
+    Value(&'a mut toml::Value),
+}
+
+impl<'a> TableOrValue<'a> {
+    fn step(
+        self,
+        segment: &Segment,
+        walked: &mut String,
+        create: bool,
+    ) -> Result<TableOrValue<'a>, String> {
+        let name = walked.clone();
+        let next = match (self, segment) {
+            (TableOrValue::Table(t), Segment::Key(k)) => {
+                if create && !t.contains_key(k) {
+                    t.insert(k.clone(), toml::Value::Table(Default::default()));
+                }
+                t.get_mut(k).expect("present or just inserted")
+            }
+            (TableOrValue::Value(toml::Value::Table(t)), Segment::Key(k)) => {
+                if create && !t.contains_key(k) {
+                    t.insert(k.clone(), toml::Value::Table(Default::default()));
+                }
+                t.get_mut(k).expect("present or just inserted")
+            }
+            (TableOrValue::Value(toml::Value::Array(a)), Segment::Index(i)) => {
+                let n = a.len();
+                a.get_mut(*i).ok_or_else(|| {
+                    format!(
+                        "{name} has {n} entries (indices 0 … {}), so [{i}] does not exist",
+                        n.max(1) - 1
+                    )
+                })?
+            }
+            (TableOrValue::Value(v), Segment::Index(i)) => {
+                return Err(format!(
+                    "{name} is {}, not an array, so [{i}] does not exist",
+                    kind(v)
+                ))
+            }
+            (TableOrValue::Value(v), Segment::Key(k)) => {
+                return Err(format!(
+                    "{name} is {}, not a table, so it has no key \"{k}\"",
+                    kind(v)
+                ))
+            }
+            (TableOrValue::Table(_), Segment::Index(i)) => {
+                return Err(format!("the file is a table, not an array: [{i}]"))
+            }
+        };
+        match segment {
+            Segment::Key(k) if walked.is_empty() => walked.push_str(k),
+            Segment::Key(k) => {
+                walked.push('.');
+                walked.push_str(k)
+            }
+            Segment::Index(i) => walked.push_str(&format!("[{i}]")),
+        }
+        Ok(TableOrValue::Value(next))
+    }
+
+    fn set(self, segment: &Segment, value: toml::Value, walked: &str) -> Result<(), String> {
+        match (self, segment) {
+            (TableOrValue::Table(t), Segment::Key(k))
+            | (TableOrValue::Value(toml::Value::Table(t)), Segment::Key(k)) => {
+                t.insert(k.clone(), value);
+                Ok(())
+            }
+            (here, segment) => {
+                let mut walked = walked.to_string();
+                match here.step(segment, &mut walked, false)? {
+                    TableOrValue::Value(slot) => {
+                        *slot = value;
+                        Ok(())
+                    }
+                    TableOrValue::Table(_) => unreachable!("step always returns a value"),
+                }
+            }
+        }
+    }
+}
+
+fn kind(v: &toml::Value) -> &'static str {
+    match v {
+        toml::Value::String(_) => "a string",
+        toml::Value::Integer(_) | toml::Value::Float(_) => "a number",
+        toml::Value::Boolean(_) => "a boolean",
+        toml::Value::Datetime(_) => "a date",
+        toml::Value::Array(_) => "an array",
+        toml::Value::Table(_) => "a table",
+    }
+}
+
+/// One line from a TOML reader message, whatever its layout.
+pub(crate) fn one_line(message: &str) -> String {
+    message.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// Read a problem file's text into the schema, with `overrides` applied in order.
+///
+/// Errors in the file itself name its line (as without overrides); an override that names a
+/// key the schema does not know, follows a path that does not exist, or gives a value of the
+/// wrong type is reported as `FILE: KEY: message` with the override's key.
+pub fn parse_spec(
+    text: &str,
+    file: &str,
+    overrides: &[Override],
+) -> Result<ProblemSpec, ProblemError> {
+    let file_error = |e: toml::de::Error| {
+        let key = match e.span() {
+            Some(span) => format!(
+                "line {}",
+                text[..span.start.min(text.len())].lines().count().max(1)
+            ),
+            None => "(file)".into(),
+        };
+        ProblemError {
+            file: file.into(),
+            key,
+            message: one_line(e.message()),
+        }
+    };
+    // The file is read on its own first, so that its own errors keep their line numbers.
+    let spec: ProblemSpec = toml::from_str(text).map_err(file_error)?;
+    if overrides.is_empty() {
+        return Ok(spec);
+    }
+    let mut table: toml::Table = toml::from_str(text).map_err(file_error)?;
+    let mut spec = spec;
+    for o in overrides {
+        let error = |message: String| ProblemError {
+            file: file.into(),
+            key: o.key.clone(),
+            message,
+        };
+        apply(&mut table, o).map_err(error)?;
+        // Read after each override, so that an error is charged to the override that made it.
+        spec = toml::Value::Table(table.clone())
+            .try_into()
+            .map_err(|e: toml::de::Error| error(one_line(e.message())))?;
+    }
+    Ok(spec)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn punch() -> &'static str {
+        crate::examples::example("punch-b40").unwrap()
+    }
+
+    fn with(sets: &[&str]) -> Result<ProblemSpec, ProblemError> {
+        let o: Vec<Override> = sets.iter().map(|s| Override::parse(s).unwrap()).collect();
+        parse_spec(punch(), "f.toml", &o)
+    }
+
+    #[test]
+    fn values_reach_the_schema() {
+        let spec = with(&[
+            "plate.pin=[1100, 120]",
+            "contact.friction=0.4",
+            "wear.body1.b=1.2",
+            "bodies[1].blocks[0].v=8",
+            "contact.method=lemke",
+        ])
+        .unwrap();
+        assert_eq!(spec.plate.unwrap().pin, Some([1100.0, 120.0]));
+        let c = spec.contact.unwrap();
+        assert_eq!((c.friction, c.method.as_str()), (0.4, "lemke"));
+        assert_eq!(spec.wear.unwrap().body1.unwrap().b, 1.2);
+        assert!(matches!(spec.bodies[1].blocks[0].v, LinesSpec::Count(8)));
+    }
+
+    use crate::schema::LinesSpec;
+
+    #[test]
+    fn bad_keys_and_values_name_the_key() {
+        let cases = [
+            ("plate.pinn=[1, 2]", "plate.pinn", "pinn"),
+            (
+                "contact.friction=\"high\"",
+                "contact.friction",
+                "invalid type",
+            ),
+            ("plate.pin=[1, 2, 3]", "plate.pin", "two numbers"),
+            ("bodies[5].name=\"x\"", "bodies[5].name", "2 entries"),
+            ("contact.friction.x=1", "contact.friction.x", "not a table"),
+            ("wear.steps=1.5", "wear.steps", "invalid type"),
+        ];
+        for (set, key, fragment) in cases {
+            let e = with(&[set]).unwrap_err();
+            assert_eq!(
+                (e.file.as_str(), e.key.as_str()),
+                ("f.toml", key),
+                "{set}: {e}"
+            );
+            assert!(e.message.contains(fragment), "{set}: {e}");
+            assert_eq!(e.to_string().lines().count(), 1);
+        }
+    }
+
+    #[test]
+    fn malformed_set_text_is_rejected() {
+        for text in [
+            "contact.friction",
+            "=1",
+            "a..b=1",
+            "bodies[x].name=1",
+            "a[1=2",
+        ] {
+            let e = Override::parse(text).unwrap_err();
+            assert_eq!(e.file, SET, "{text}: {e}");
+        }
+    }
+
+    /// The overridden document is read from a TOML value, the plain file from text: both
+    /// readers must give the same schema for the same content, in every shipped example.
+    #[test]
+    fn a_no_op_override_changes_nothing() {
+        for (name, text) in crate::examples::EXAMPLES {
+            let plain = parse_spec(text, name, &[]).unwrap();
+            let same = Override::parse("title=\"x\"").unwrap();
+            let mut via_value = parse_spec(text, name, &[same]).unwrap();
+            via_value.title = plain.title.clone();
+            assert_eq!(format!("{plain:?}"), format!("{via_value:?}"), "{name}");
+        }
+    }
+
+    #[test]
+    fn no_overrides_reads_the_file_unchanged() {
+        let spec = with(&[]).unwrap();
+        assert_eq!(spec.plate.unwrap().pin, Some([1100.0, 140.0]));
+    }
+}

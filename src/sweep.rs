@@ -1,0 +1,276 @@
+//! Parameter studies: the Cartesian product of overrides ([`crate::overrides`]) of one problem,
+//! each variant solved by a job of [`crate::driver`] (the steady state or a wear run), the
+//! variants in parallel on a rayon pool. The CLI's `wearfem sweep` is a thin shell around
+//! [`Sweep::prepare`], [`run`] and [`report::write`]; a Python layer can call the same three.
+//!
+//! Each variant is solved exactly as a single `wearfem steady --set …` (or `run --set …`) with
+//! the same overrides would be: the same problem text, the same overrides in the same order,
+//! the same job function, on one thread. Its figures are therefore identical to the single
+//! run's, bit for bit.
+
+use crate::driver::{self, JobError};
+use crate::overrides::{Override, SET};
+use crate::problem::{Problem, ProblemError};
+use rayon::prelude::*;
+use std::time::Instant;
+
+pub mod report;
+
+/// Which job each variant runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Job {
+    /// The steady worn state, computed directly ([`driver::steady`]).
+    Steady,
+    /// The wear time integration over the problem's steps ([`driver::wear`]).
+    Run,
+}
+
+/// The axes of a study: for each key, the values it takes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sweep {
+    /// (key, values) in the order given; the first key varies slowest.
+    pub axes: Vec<(String, Vec<toml::Value>)>,
+}
+
+impl Sweep {
+    /// Read the axes from `--set` texts `KEY=[V1, V2, …]` (a TOML array of the values; a
+    /// value that is not an array is one value).
+    pub fn parse(sets: &[String]) -> Result<Sweep, ProblemError> {
+        let mut axes = Vec::new();
+        for text in sets {
+            let (key, value) = crate::overrides::split(text)?;
+            let values = match crate::overrides::parse_value(value) {
+                toml::Value::Array(values) => values,
+                single => vec![single],
+            };
+            if values.is_empty() {
+                return Err(ProblemError {
+                    file: SET.into(),
+                    key: key.into(),
+                    message: "the list of values is empty".into(),
+                });
+            }
+            // Checks the key's syntax now, before any variant is built.
+            Override::new(key, values[0].clone())?;
+            axes.push((key.to_string(), values));
+        }
+        Ok(Sweep { axes })
+    }
+
+    /// The overrides of every variant: the Cartesian product of the axes, first key slowest.
+    pub fn variants(&self) -> Result<Vec<Vec<Override>>, ProblemError> {
+        let mut variants: Vec<Vec<Override>> = vec![vec![]];
+        for (key, values) in &self.axes {
+            let mut next = Vec::with_capacity(variants.len() * values.len());
+            for v in &variants {
+                for value in values {
+                    let mut o = v.clone();
+                    o.push(Override::new(key, value.clone())?);
+                    next.push(o);
+                }
+            }
+            variants = next;
+        }
+        Ok(variants)
+    }
+
+    /// Build and validate every variant's problem before any is solved, so that a bad key or
+    /// value stops the study at once.
+    pub fn prepare(&self, text: &str, file: &str) -> Result<Vec<Variant>, ProblemError> {
+        self.variants()?
+            .into_iter()
+            .map(|overrides| {
+                let problem = Problem::with_overrides(text, file, &overrides)?;
+                Ok(Variant { overrides, problem })
+            })
+            .collect()
+    }
+}
+
+/// One variant of a study: its overrides and the problem they give.
+#[derive(Clone, Debug)]
+pub struct Variant {
+    /// The overrides, one per axis, in axis order.
+    pub overrides: Vec<Override>,
+    /// The validated problem.
+    pub problem: Problem,
+}
+
+/// The figures of one solved variant.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    /// "solved", or what went wrong ("not converged (…)", "failed solves: …").
+    pub status: String,
+    /// Whether the computation converged (the figures are trustworthy).
+    pub converged: bool,
+    /// x of the contact points, mm.
+    pub x: Vec<f64>,
+    /// '+' half-cycle pressure (monotonic: the pressure), MPa.
+    pub p_plus: Vec<f64>,
+    /// '−' half-cycle pressure, MPa; `None` for monotonic sliding.
+    pub p_minus: Option<Vec<f64>>,
+    /// Worn shape (wear gap), mm.
+    pub shape: Vec<f64>,
+    /// Probe names and their contact point indices.
+    pub probes: Vec<(String, usize)>,
+    /// Rigid wear per period by plate unknown (`lambda_F` mm, `lambda_M` rad); steady only.
+    pub rigid_wear_per_period: Option<Vec<(String, f64)>>,
+    /// Wall-clock seconds of this variant (set-up included).
+    pub seconds: f64,
+}
+
+impl Outcome {
+    /// Largest '+' pressure, MPa.
+    pub fn peak_p_plus(&self) -> f64 {
+        peak(&self.p_plus)
+    }
+
+    /// Largest '−' pressure, MPa (reciprocating only).
+    pub fn peak_p_minus(&self) -> Option<f64> {
+        self.p_minus.as_deref().map(peak)
+    }
+
+    /// max − min of the shape over the contact points, mm.
+    pub fn shape_range(&self) -> f64 {
+        let (lo, hi) = self
+            .shape
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &s| {
+                (a.min(s), b.max(s))
+            });
+        hi - lo
+    }
+}
+
+fn peak(p: &[f64]) -> f64 {
+    p.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// Solve one variant with `job`.
+pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
+    let start = Instant::now();
+    let outcome = match job {
+        Job::Steady => {
+            let (state, contact, _) = driver::steady(problem)?;
+            let converged = state.status == crate::steady::SteadyStatus::Solved;
+            Outcome {
+                status: if converged {
+                    "solved".into()
+                } else {
+                    format!(
+                        "not converged ({:?}, wear residual {:.3e})",
+                        state.status, state.wear_residual
+                    )
+                },
+                converged,
+                x: contact.points.x.iter().map(|p| p[0]).collect(),
+                p_minus: (!state.p_minus.is_empty()).then(|| state.p_minus.clone()),
+                p_plus: state.p_plus,
+                shape: state.shape,
+                probes: driver::contact_probes(problem, &contact),
+                rigid_wear_per_period: Some(
+                    contact
+                        .rigid_names
+                        .iter()
+                        .zip(&state.rigid_wear)
+                        .map(|(n, v)| (n.to_string(), *v))
+                        .collect(),
+                ),
+                seconds: 0.0,
+            }
+        }
+        Job::Run => {
+            let run = driver::wear(problem, None, |_| {})?;
+            let h = &run.history;
+            let stopped_early = h
+                .stopped
+                .as_ref()
+                .filter(|(_, reason)| *reason != crate::wear::StopReason::SteadyState);
+            let converged = h.failed_solves == 0
+                && h.unconverged_steps == 0
+                && h.oscillating_steps == 0
+                && stopped_early.is_none()
+                && h.steady_distance.is_some();
+            let monotonic = h.steps.iter().all(|s| s.direction == "+");
+            Outcome {
+                status: if converged {
+                    "solved".into()
+                } else {
+                    format!(
+                        "failed solves {}, unconverged steps {}{}",
+                        h.failed_solves,
+                        h.unconverged_steps,
+                        stopped_early.map_or(String::new(), |(s, reason)| format!(
+                            ", stopped at step {s}: {reason}"
+                        ))
+                    )
+                },
+                converged,
+                x: run.contact.points.x.iter().map(|p| p[0]).collect(),
+                p_plus: h.p_plus.clone(),
+                p_minus: (!monotonic).then(|| h.p_minus.clone()),
+                shape: h.shape.clone(),
+                probes: run.probes.clone(),
+                rigid_wear_per_period: None,
+                seconds: 0.0,
+            }
+        }
+    };
+    Ok(Outcome {
+        seconds: start.elapsed().as_secs_f64(),
+        ..outcome
+    })
+}
+
+/// Solve every variant with `job` on `jobs` threads (0: one per core), calling `on_done`
+/// (from any thread) as each finishes. The outcomes are in variant order; a variant whose
+/// input is bad gives its error in place.
+pub fn run(
+    variants: &[Variant],
+    job: Job,
+    jobs: usize,
+    on_done: &(dyn Fn(&Result<Outcome, JobError>) + Sync),
+) -> Vec<Result<Outcome, JobError>> {
+    let work = || {
+        variants
+            .par_iter()
+            .map(|v| {
+                let outcome = solve(&v.problem, job);
+                on_done(&outcome);
+                outcome
+            })
+            .collect()
+    };
+    match rayon::ThreadPoolBuilder::new().num_threads(jobs).build() {
+        Ok(pool) => pool.install(work),
+        // Only the speed depends on the pool: without one, rayon's global pool does the work.
+        Err(_) => work(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn variants_are_the_cartesian_product_first_key_slowest() {
+        let sweep = Sweep::parse(&[
+            "plate.pin=[[1100,120],[1100,140]]".into(),
+            "contact.friction=[0.1,0.25,0.4]".into(),
+            "wear.body1.b=1.2".into(),
+        ])
+        .unwrap();
+        let v = sweep.variants().unwrap();
+        assert_eq!(v.len(), 2 * 3);
+        let text = |i: usize| -> Vec<String> { v[i].iter().map(|o| o.value_text()).collect() };
+        assert_eq!(text(0), ["[1100, 120]", "0.1", "1.2"]);
+        assert_eq!(text(1), ["[1100, 120]", "0.25", "1.2"]);
+        assert_eq!(text(5), ["[1100, 140]", "0.4", "1.2"]);
+    }
+
+    #[test]
+    fn an_empty_list_is_an_error() {
+        let e = Sweep::parse(&["contact.friction=[]".into()]).unwrap_err();
+        assert_eq!(e.key, "contact.friction");
+    }
+}

@@ -1,0 +1,308 @@
+//! The files of a study: `sweep.csv` (one row per variant), `sweep.json` (the same, with the
+//! profiles) and `sweep.svg` (the '+' pressure and the worn shape of every variant).
+
+use super::{Job, Outcome, Variant};
+use crate::output::{number, numbers, write_csv, write_json, OutputError};
+use serde_json::{json, Value};
+use std::path::Path;
+
+/// A CSV cell holding text: quoted (RFC 4180) when it holds a comma or a quote.
+fn text_cell(s: &str) -> Value {
+    if s.contains([',', '"', '\n']) {
+        Value::String(format!("\"{}\"", s.replace('"', "\"\"")))
+    } else {
+        Value::String(s.to_string())
+    }
+}
+
+/// Column names of `sweep.csv` for these outcomes.
+fn columns(variants: &[Variant], outcomes: &[Outcome]) -> Columns {
+    let first = &outcomes[0];
+    Columns {
+        keys: variants[0]
+            .overrides
+            .iter()
+            .map(|o| o.key.clone())
+            .collect(),
+        reciprocating: outcomes.iter().any(|o| o.p_minus.is_some()),
+        probes: first.probes.iter().map(|p| p.0.clone()).collect(),
+        rigid: first
+            .rigid_wear_per_period
+            .as_ref()
+            .map(|r| r.iter().map(|(n, _)| n.clone()).collect())
+            .unwrap_or_default(),
+    }
+}
+
+struct Columns {
+    keys: Vec<String>,
+    reciprocating: bool,
+    probes: Vec<String>,
+    rigid: Vec<String>,
+}
+
+impl Columns {
+    fn header(&self) -> Vec<String> {
+        let mut h: Vec<String> = self.keys.clone();
+        h.push("status".into());
+        h.push("peak_p_plus_MPa".into());
+        if self.reciprocating {
+            h.push("peak_p_minus_MPa".into());
+        }
+        for p in &self.probes {
+            h.push(format!("p_plus_{p}_MPa"));
+            if self.reciprocating {
+                h.push(format!("p_minus_{p}_MPa"));
+            }
+        }
+        for r in &self.rigid {
+            let unit = if r == "lambda_M" { "rad" } else { "mm" };
+            h.push(format!("rigid_wear_per_period_{r}_{unit}"));
+        }
+        h.push("shape_range_mm".into());
+        h.push("seconds".into());
+        h
+    }
+
+    fn row(&self, v: &Variant, o: &Outcome) -> Vec<Value> {
+        let mut r: Vec<Value> = v
+            .overrides
+            .iter()
+            .map(|o| text_cell(&o.value_text()))
+            .collect();
+        r.push(text_cell(&o.status));
+        r.push(number(o.peak_p_plus()));
+        let blank = || Value::String(String::new());
+        if self.reciprocating {
+            r.push(o.peak_p_minus().map_or_else(blank, number));
+        }
+        for name in &self.probes {
+            let at = o.probes.iter().find(|p| &p.0 == name).map(|p| p.1);
+            r.push(at.map_or_else(blank, |i| number(o.p_plus[i])));
+            if self.reciprocating {
+                let minus = at.zip(o.p_minus.as_ref()).map(|(i, m)| m[i]);
+                r.push(minus.map_or_else(blank, number));
+            }
+        }
+        for name in &self.rigid {
+            let value = o
+                .rigid_wear_per_period
+                .as_ref()
+                .and_then(|r| r.iter().find(|(n, _)| n == name))
+                .map(|(_, v)| *v);
+            r.push(value.map_or_else(blank, number));
+        }
+        r.push(number(o.shape_range()));
+        r.push(number(o.seconds));
+        r
+    }
+}
+
+/// The summary JSON of a study.
+pub fn summary(
+    title: &str,
+    job: Job,
+    jobs: usize,
+    variants: &[Variant],
+    outcomes: &[Outcome],
+    seconds: f64,
+) -> Value {
+    let rows: Vec<Value> = variants
+        .iter()
+        .zip(outcomes)
+        .map(|(v, o)| {
+            let overrides: serde_json::Map<String, Value> = v
+                .overrides
+                .iter()
+                .map(|o| (o.key.clone(), json!(o.value)))
+                .collect();
+            let probe = |p: &[f64]| -> serde_json::Map<String, Value> {
+                o.probes
+                    .iter()
+                    .map(|(n, i)| (n.clone(), number(p[*i])))
+                    .collect()
+            };
+            let mut row = json!({
+                "overrides": overrides,
+                "status": o.status,
+                "converged": o.converged,
+                "peak_p_plus": number(o.peak_p_plus()),
+                "probes_p_plus": probe(&o.p_plus),
+                "shape_range": number(o.shape_range()),
+                "seconds": o.seconds,
+                "x": numbers(&o.x),
+                "p_plus": numbers(&o.p_plus),
+                "shape": numbers(&o.shape),
+            });
+            if let Some(m) = &o.p_minus {
+                row["peak_p_minus"] = number(o.peak_p_minus().unwrap_or(f64::NAN));
+                row["probes_p_minus"] = json!(probe(m));
+                row["p_minus"] = numbers(m);
+            }
+            if let Some(r) = &o.rigid_wear_per_period {
+                row["rigid_wear_per_period"] =
+                    Value::Object(r.iter().map(|(n, v)| (n.clone(), number(*v))).collect());
+            }
+            row
+        })
+        .collect();
+    json!({
+        "title": title,
+        "job": match job { Job::Steady => "steady", Job::Run => "run" },
+        "threads": jobs,
+        "variants": rows,
+        "seconds": seconds,
+    })
+}
+
+/// Write `sweep.csv`, `sweep.json` and `sweep.svg` into `dir`. `outcomes` are in variant
+/// order and must not be empty.
+pub fn write(
+    dir: &Path,
+    title: &str,
+    job: Job,
+    jobs: usize,
+    variants: &[Variant],
+    outcomes: &[Outcome],
+    seconds: f64,
+) -> Result<(), OutputError> {
+    let columns = columns(variants, outcomes);
+    let header = columns.header();
+    let header: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
+    let rows: Vec<Vec<Value>> = variants
+        .iter()
+        .zip(outcomes)
+        .map(|(v, o)| columns.row(v, o))
+        .collect();
+    write_csv(dir, "sweep.csv", &header, &rows)?;
+    write_json(
+        dir,
+        "sweep.json",
+        &summary(title, job, jobs, variants, outcomes, seconds),
+    )?;
+    let path = dir.join("sweep.svg");
+    plot(&path, title, variants, outcomes).map_err(|m| OutputError {
+        path: path.display().to_string(),
+        source: std::io::Error::other(m),
+    })
+}
+
+/// Two panels side by side: the '+' pressure and the worn shape of every variant, one colour
+/// each (evenly spaced hues, so that nine or more variants stay apart).
+fn plot(
+    path: &Path,
+    title: &str,
+    variants: &[Variant],
+    outcomes: &[Outcome],
+) -> Result<(), String> {
+    use plotters::prelude::*;
+    let e = |e: &dyn std::fmt::Display| e.to_string();
+    let missing = outcomes.iter().filter(|o| !o.converged).count();
+    let heading = match missing {
+        0 => format!("{title}: parameter study"),
+        m => format!("{title}: parameter study ({m} variants did not converge and are not drawn)"),
+    };
+    let legend_rows = outcomes.iter().filter(|o| o.converged).count().div_ceil(3);
+    let height = 560 + 24 * legend_rows as u32;
+    let root = SVGBackend::new(path, (1400, height)).into_drawing_area();
+    root.fill(&WHITE).map_err(|x| e(&x))?;
+    let root = root
+        .titled(&heading, ("sans-serif", 22))
+        .map_err(|x| e(&x))?;
+    // The legend goes below the panels, where it hides no curve.
+    let (upper, legend) = root.split_vertically(530);
+    let panels = upper.split_evenly((1, 2));
+    let label = |v: &&Variant| {
+        v.overrides
+            .iter()
+            .map(|o| format!("{} = {}", o.key, o.value_text()))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    // A variant that did not converge ends on an iterate far off every scale: it is listed in
+    // the CSV with its status but not drawn.
+    let drawn: Vec<usize> = (0..outcomes.len())
+        .filter(|&k| outcomes[k].converged)
+        .collect();
+    let (variants, outcomes): (Vec<&Variant>, Vec<&Outcome>) =
+        drawn.iter().map(|&k| (&variants[k], &outcomes[k])).unzip();
+    let n = outcomes.len().max(1) as f64;
+    let colour = |k: usize| HSLColor(k as f64 / n * 0.85, 0.8, 0.42);
+    let curves = [
+        ("'+' half-cycle pressure", "p+ (MPa)", 1.0),
+        ("worn shape (wear gap)", "g (µm)", 1000.0),
+    ];
+    for (panel, (name, y_label, scale)) in panels.iter().zip(curves) {
+        let value = |o: &&Outcome, i: usize| {
+            if scale == 1.0 {
+                o.p_plus[i]
+            } else {
+                o.shape[i] * scale
+            }
+        };
+        let points: Vec<Vec<(f64, f64)>> = outcomes
+            .iter()
+            .map(|o| {
+                (0..o.x.len())
+                    .map(|i| (o.x[i], value(o, i)))
+                    .filter(|p| p.0.is_finite() && p.1.is_finite())
+                    .collect()
+            })
+            .collect();
+        let all = points.iter().flatten();
+        let (x0, x1, y0, y1) = all.fold(
+            (
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+            ),
+            |(a, b, c, d), p| (a.min(p.0), b.max(p.0), c.min(p.1), d.max(p.1)),
+        );
+        if !(x0.is_finite() && y0.is_finite()) {
+            continue;
+        }
+        let pad = |lo: f64, hi: f64| {
+            let d = if hi > lo {
+                0.05 * (hi - lo)
+            } else {
+                0.5 * lo.abs().max(1.0)
+            };
+            (lo - d, hi + d)
+        };
+        let ((x0, x1), (y0, y1)) = (pad(x0, x1), pad(y0, y1));
+        let mut chart = ChartBuilder::on(panel)
+            .caption(name, ("sans-serif", 18))
+            .margin(15)
+            .x_label_area_size(45)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(|x| e(&x))?;
+        chart
+            .configure_mesh()
+            .x_desc("x (mm)")
+            .y_desc(y_label)
+            .draw()
+            .map_err(|x| e(&x))?;
+        for (k, pts) in points.into_iter().enumerate() {
+            let c = colour(k);
+            chart
+                .draw_series(LineSeries::new(pts, c.stroke_width(2)))
+                .map_err(|x| e(&x))?;
+        }
+    }
+    for (k, v) in variants.iter().enumerate() {
+        let (x, y) = (40 + 450 * (k % 3) as i32, 10 + 24 * (k / 3) as i32);
+        let c = colour(k);
+        legend
+            .draw(&PathElement::new(
+                vec![(x, y + 7), (x + 30, y + 7)],
+                c.stroke_width(3),
+            ))
+            .map_err(|x| e(&x))?;
+        legend
+            .draw(&Text::new(label(v), (x + 40, y), ("sans-serif", 14)))
+            .map_err(|x| e(&x))?;
+    }
+    root.present().map_err(|x| e(&x))
+}

@@ -1,0 +1,305 @@
+//! Wear input in the quantities engineers use, converted to the model's: Archard's wear
+//! coefficients to β̃, and a duration in cycles or sliding distance to a number of steps.
+//!
+//! **Wear coefficients.** The model's rule is ẇ = β̃ pᵇ |v|ᵃ (paper eq. 1), with the wear rate
+//! ẇ in mm/s, the contact pressure p in MPa and the sliding speed v in mm/s. The paper writes it
+//! with the friction stress, ẇ = β (μ p)ᵇ |v|ᵃ, so β̃ = β μᵇ. Archard's law is written with the
+//! *normal* pressure: worn volume V = k F s, or per unit area, wear depth w = k p s. For a = b = 1
+//! it is the model's rule with β̃ in place of k: **μ does not enter the conversion** from
+//! Archard's k to β̃ (it enters only between the paper's β and β̃; the paper's β = k / μ).
+//!
+//! - Dimensional coefficient k in mm³/(N·m) (the "specific wear rate" of tribometer data): with
+//!   p in N/mm² and s in m, w = k p s is in mm³/(N·m) · N/mm² · m = mm. With the sliding in mm,
+//!   s = s_mm / 1000, so w = (k / 1000) p s_mm and **β̃ = k / 1000** in MPa⁻¹ (mm²/N, i.e. mm of
+//!   wear per mm of sliding per MPa).
+//! - Dimensionless coefficient K with the hardness H (MPa) of the wearing body: V = K F s / H,
+//!   w = (K / H) p s with s in mm, so **β̃ = K / H** in MPa⁻¹.
+//!
+//! Both forms are Archard's linear law, so they require a = b = 1.
+//!
+//! **Duration.** `wear.steps` counts numerical steps; step n stands for k(n) half periods
+//! (the extrapolation schedule, paper eq. 29–30). Instead of `steps` a file may give
+//! `cycles` (reciprocating: 2 half periods each) or `distance` (m of sliding: 2u₀ per half
+//! period; monotonic: v · `step_time` per step unit), rounded to the nearest whole half period
+//! (step unit). The steps are then those of the schedule that cover exactly that many half
+//! periods: the last step's k is cut down to the remainder when the schedule would overshoot.
+
+use crate::kinematics::{factor, paper_schedule, ScheduleEntry};
+use crate::wear::{WearLaw, WearSpec, MAX_STEPS};
+use serde::Deserialize;
+
+/// A wear law as written in a problem file: one of `beta`, `k`, or `K` with `hardness`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WearLawInput {
+    /// β̃ = β μᵇ, mm^(1−a) s^(a−1) MPa^(−b).
+    pub beta: Option<f64>,
+    /// Archard's dimensional wear coefficient, mm³/(N·m).
+    pub k: Option<f64>,
+    /// Archard's dimensionless wear coefficient (needs `hardness`).
+    #[serde(rename = "K")]
+    pub k_dimensionless: Option<f64>,
+    /// Hardness H of the wearing body, MPa (with `K`).
+    pub hardness: Option<f64>,
+    /// Velocity exponent a (default 1).
+    pub a: Option<f64>,
+    /// Pressure exponent b (default 1).
+    pub b: Option<f64>,
+}
+
+/// β̃ (MPa⁻¹) from Archard's dimensional coefficient k (mm³/(N·m)).
+pub fn beta_from_archard_k(k: f64) -> f64 {
+    k / 1000.0
+}
+
+/// β̃ (MPa⁻¹) from Archard's dimensionless K and the hardness H (MPa).
+pub fn beta_from_archard_kh(k_dimensionless: f64, hardness: f64) -> f64 {
+    k_dimensionless / hardness
+}
+
+impl TryFrom<WearLawInput> for WearLaw {
+    type Error = String;
+
+    fn try_from(w: WearLawInput) -> Result<WearLaw, String> {
+        let (a, b) = (w.a.unwrap_or(1.0), w.b.unwrap_or(1.0));
+        let archard = |what: &str, value: f64| {
+            if a != 1.0 || b != 1.0 {
+                return Err(format!("wear law: Archard's {what} is the linear law a = b = 1; give beta for a = {a}, b = {b}"));
+            }
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(format!(
+                    "wear law: {what} must be finite and ≥ 0, got {value}"
+                ));
+            }
+            Ok(())
+        };
+        let beta = match (w.beta, w.k, w.k_dimensionless, w.hardness) {
+            (Some(beta), None, None, None) => beta,
+            (None, Some(k), None, None) => {
+                archard("k (mm³/(N·m))", k)?;
+                beta_from_archard_k(k)
+            }
+            (None, None, Some(k), Some(h)) => {
+                archard("K", k)?;
+                if !(h.is_finite() && h > 0.0) {
+                    return Err(format!("wear law: hardness must be > 0 (MPa), got {h}"));
+                }
+                beta_from_archard_kh(k, h)
+            }
+            (None, None, Some(_), None) => {
+                return Err(
+                    "wear law: K (dimensionless) needs the hardness H (MPa) of the wearing body"
+                        .into(),
+                )
+            }
+            (None, None, None, Some(_)) => {
+                return Err("wear law: hardness is used only with K".into())
+            }
+            _ => return Err(
+                "wear law: give exactly one of beta (β̃), k (Archard, mm³/(N·m)) or K with hardness"
+                    .into(),
+            ),
+        };
+        Ok(WearLaw { beta, a, b })
+    }
+}
+
+type KeyError = (String, String);
+
+/// `spec` with `steps` (and, when the schedule overshoots, `extrapolation`) worked out from
+/// whichever of `steps`, `cycles` and `distance` it gives. The error names the key.
+pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
+    let bad = |k: &str, m: String| Err((format!("wear.{k}"), m));
+    let given = [
+        spec.steps > 0,
+        spec.cycles.is_some(),
+        spec.distance.is_some(),
+    ];
+    match given.iter().filter(|g| **g).count() {
+        0 => {
+            return bad(
+                "steps",
+                "give the duration: steps, cycles or distance (m)".into(),
+            )
+        }
+        1 => {}
+        _ => {
+            return bad(
+                "steps",
+                "give only one of steps, cycles and distance (m)".into(),
+            )
+        }
+    }
+    if spec.steps > 0 {
+        return Ok(spec.clone());
+    }
+    let monotonic = spec.sliding == "monotonic";
+    let (key, units) = match (spec.cycles, spec.distance) {
+        (Some(_), _) if monotonic => {
+            return bad(
+                "cycles",
+                "monotonic sliding has no cycles: give distance (m) or steps".into(),
+            )
+        }
+        (Some(c), _) => ("cycles", 2.0 * c),
+        (None, Some(d)) => {
+            // Sliding per half period (per step unit when monotonic), mm.
+            let per_unit = if monotonic {
+                spec.speed * spec.step_time
+            } else {
+                2.0 * spec.amplitude
+            };
+            if !(per_unit > 0.0 && per_unit.is_finite()) {
+                return bad("distance", "needs the sliding (amplitude, or speed and step_time) to be given and positive".into());
+            }
+            ("distance", 1000.0 * d / per_unit)
+        }
+        (None, None) => unreachable!("one of the three is given"),
+    };
+    let value = spec.cycles.or(spec.distance).unwrap_or(f64::NAN);
+    let half_periods = units.round();
+    if !(value.is_finite() && (1.0..=1e12).contains(&half_periods)) {
+        return bad(
+            key,
+            format!("must give at least one half period (and at most 1e12), got {value}"),
+        );
+    }
+    let schedule = spec.extrapolation.clone().unwrap_or_else(paper_schedule);
+    let (steps, schedule) = steps_for(half_periods as u64, &schedule).ok_or_else(|| {
+        (
+            format!("wear.{key}"),
+            format!("{value} needs more than {MAX_STEPS} steps with this extrapolation schedule"),
+        )
+    })?;
+    Ok(WearSpec {
+        steps,
+        extrapolation: Some(schedule),
+        ..spec.clone()
+    })
+}
+
+/// The number of steps whose factors sum to exactly `half_periods`, and the schedule that
+/// does it (`schedule` itself, its last step's k cut to the remainder if needed); `None` past
+/// [`MAX_STEPS`]. Entries with a bad k are left for the validation to report.
+pub fn steps_for(
+    half_periods: u64,
+    schedule: &[ScheduleEntry],
+) -> Option<(usize, Vec<ScheduleEntry>)> {
+    let mut done = 0u64;
+    for n in 1..=MAX_STEPS {
+        let k = factor(schedule, n).max(1) as u64;
+        if done + k >= half_periods {
+            let last = half_periods - done;
+            if last == k {
+                return Some((n, schedule.to_vec()));
+            }
+            // Steps 1 … n−1 as scheduled, then step n with the remainder.
+            let mut cut: Vec<ScheduleEntry> = (1..n)
+                .map(|m| ScheduleEntry {
+                    until: Some(m),
+                    k: factor(schedule, m),
+                })
+                .collect();
+            cut.dedup_by(|later, earlier| {
+                let same = later.k == earlier.k;
+                if same {
+                    earlier.until = later.until;
+                }
+                same
+            });
+            cut.push(ScheduleEntry {
+                until: None,
+                k: last as usize,
+            });
+            return Some((n, cut));
+        }
+        done += k;
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Hand calculation: Archard's k = 2·10⁻⁶ mm³/(N·m) (a hard steel pair). Over s = 1 m at
+    /// p = 10 MPa the wear depth is w = k p s = 2·10⁻⁶ · 10 · 1 = 2·10⁻⁵ mm. The model's rule over
+    /// 1000 mm of sliding: w = β̃ p s_mm, so β̃ = 2·10⁻⁵ / (10 · 1000) = 2·10⁻⁹ MPa⁻¹.
+    #[test]
+    fn archard_k_by_hand() {
+        let beta = beta_from_archard_k(2e-6);
+        assert!((beta - 2e-9).abs() <= 1e-24, "{beta}");
+        let depth = beta * 10.0 * 1000.0;
+        assert!((depth - 2e-5).abs() <= 1e-19);
+    }
+
+    /// Hand calculation: K = 10⁻⁴ (mild wear), H = 2000 MPa. V = K F s / H: F = 100 N on
+    /// 10 mm² (p = 10 MPa), s = 500 mm gives V = 10⁻⁴ · 100 · 500 / 2000 = 2.5·10⁻³ mm³, a
+    /// depth of 2.5·10⁻⁴ mm; β̃ p s = 5·10⁻⁸ · 10 · 500 = 2.5·10⁻⁴ mm.
+    #[test]
+    fn archard_dimensionless_by_hand() {
+        let beta = beta_from_archard_kh(1e-4, 2000.0);
+        assert!((beta - 5e-8).abs() <= 1e-22);
+        let law: WearLaw = toml::from_str::<WearLawInput>("K = 1e-4\nhardness = 2000.0")
+            .unwrap()
+            .try_into()
+            .unwrap();
+        assert_eq!(
+            law,
+            WearLaw {
+                beta,
+                a: 1.0,
+                b: 1.0
+            }
+        );
+    }
+
+    #[test]
+    fn bad_combinations_are_rejected() {
+        for text in [
+            "beta = 1e-8\nk = 1e-6",
+            "K = 1e-4",
+            "hardness = 100.0",
+            "k = 1e-6\nb = 1.2",
+            "K = 1e-4\nhardness = 0.0",
+            "k = -1.0",
+            "a = 1.0",
+        ] {
+            let w: WearLawInput = toml::from_str(text).unwrap();
+            assert!(WearLaw::try_from(w).is_err(), "{text}");
+        }
+    }
+
+    /// Paper schedule: 50 steps of k = 1, 50 of k = 5 (300 half periods after step 100), then
+    /// k = 10. 16 300 half periods (8150 cycles) are step 100 + 1600 = 1700, the paper's run.
+    #[test]
+    fn cycles_to_steps_with_the_paper_schedule() {
+        let (n, schedule) = steps_for(16_300, &paper_schedule()).unwrap();
+        assert_eq!(n, 1700);
+        assert_eq!(schedule, paper_schedule());
+        // 303 half periods: step 100 ends at 300, step 101 would end at 310: cut to k = 3.
+        let (n, schedule) = steps_for(303, &paper_schedule()).unwrap();
+        assert_eq!(n, 101);
+        let total: usize = (1..=n).map(|m| factor(&schedule, m)).sum();
+        assert_eq!(total, 303);
+        assert_eq!(factor(&schedule, 101), 3);
+    }
+
+    #[test]
+    fn distance_to_steps() {
+        // 2u₀ = 3 mm per half period: 48.9 m is 16 300 half periods, the paper's run.
+        let text = crate::examples::example("punch-b40").unwrap();
+        let mut spec = toml::from_str::<crate::schema::ProblemSpec>(text)
+            .unwrap()
+            .wear
+            .unwrap();
+        spec.steps = 0;
+        spec.distance = Some(48.9);
+        assert_eq!(resolve_duration(&spec).unwrap().steps, 1700);
+        spec.distance = None;
+        spec.cycles = Some(8150.0);
+        assert_eq!(resolve_duration(&spec).unwrap().steps, 1700);
+        spec.steps = 5;
+        assert_eq!(resolve_duration(&spec).unwrap_err().0, "wear.steps");
+    }
+}

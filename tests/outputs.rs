@@ -1,0 +1,104 @@
+//! Output files of the new input forms: monotonic runs write no '−', summed or δw columns;
+//! a wear law given as Archard's k, and a duration given in cycles, give the run of the
+//! equivalent β̃ and steps.
+
+use std::process::Command;
+use wearfem::driver;
+use wearfem::overrides::Override;
+use wearfem::problem::Problem;
+
+fn punch(sets: &[&str]) -> Problem {
+    let o: Vec<Override> = sets.iter().map(|s| Override::parse(s).unwrap()).collect();
+    Problem::with_overrides(
+        wearfem::examples::example("punch-b40").unwrap(),
+        "punch-b40",
+        &o,
+    )
+    .unwrap()
+}
+
+#[test]
+fn monotonic_runs_write_no_minus_columns() {
+    let dir = std::env::temp_dir().join(format!("wearfem-mono-{}", std::process::id()));
+    let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .args(["run", "punch-b40", "--steps", "20", "--quiet", "--out"])
+        .arg(&dir)
+        .args(["--set", "wear.sliding=monotonic", "--set", "wear.speed=10"])
+        .args(["--set", "wear.step_time=0.3"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let header = |name: &str| {
+        let text = std::fs::read_to_string(dir.join(name)).unwrap();
+        text.lines().next().unwrap().to_string()
+    };
+    assert_eq!(header("final.csv"), "x_mm,p_plus_MPa,shape_mm");
+    assert!(!header("history.csv").contains("delta_w"));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert!(summary["final"].get("p_minus").is_none());
+    assert!(summary["final"].get("p_sum").is_none());
+    assert!(summary["steps"][0].get("delta_w").is_none());
+    // 20 steps of the paper's schedule slide 20 step units of v · step_time = 3 mm: 0.06 m.
+    let d = summary["sliding_distance_m"].as_f64().unwrap();
+    assert!((d - 0.06).abs() < 1e-15, "{d}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn archard_k_and_cycles_give_the_equivalent_run() {
+    // β̃ = 1.25π·10⁻⁸ MPa⁻¹ is k = 1000 β̃ mm³/(N·m) (docs/problem-files.md).
+    let beta = punch(&["wear.steps=120", "wear.record=[]"]);
+    let k = punch(&[
+        "wear.steps=0",
+        "wear.cycles=227.5", // 455 half periods: 50 + 5·50 + 10·15.5 → step 116 cut to k = 5
+        "wear.record=[]",
+        "wear.body1={ k = 3.9269908169872414e-5 }",
+    ]);
+    let a = driver::wear(&beta, Some(115), |_| {}).unwrap();
+    let b = driver::wear(&k, None, |_| {}).unwrap();
+    let (ha, hb) = (&a.history, &b.history);
+    assert_eq!(hb.steps.len(), 116);
+    assert_eq!(hb.steps.last().unwrap().half_period, 455);
+    assert_eq!(hb.steps.last().unwrap().k, 5);
+    // The first 115 steps are the same run: k / 1000 differs from the β̃ literal by at most
+    // one rounding (relative 1e-16), amplified by the 115 steps' contact solves; 1e-10
+    // relative is far below any physical difference and far above that round-off.
+    for (x, y) in ha.steps.iter().zip(&hb.steps) {
+        for (p, q) in x.probes.iter().zip(&y.probes) {
+            assert!(
+                (p - q).abs() <= 1e-10 * p.abs(),
+                "step {}: {p} vs {q}",
+                x.step
+            );
+        }
+    }
+}
+
+/// The progress bar is for a person at a terminal: with stderr piped (as here) a run that
+/// lasts well over the bar's one-second delay must print nothing on stderr.
+#[test]
+fn no_progress_bar_when_stderr_is_not_a_terminal() {
+    let dir = std::env::temp_dir().join(format!("wearfem-bar-{}", std::process::id()));
+    let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .args([
+            "run",
+            "brake",
+            "--steps",
+            "60000",
+            "--set",
+            "wear.record=[]",
+        ])
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&out.stderr), "");
+    let _ = std::fs::remove_dir_all(&dir);
+}

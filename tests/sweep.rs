@@ -1,0 +1,143 @@
+//! `wearfem sweep` against single runs: every row of a study must equal the single
+//! `wearfem steady --set …` run with the same overrides (issue 11), and bad overrides must stop
+//! the study before any work with one line naming the key (exit 2, nothing written).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn wearfem(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).to_string(),
+        String::from_utf8_lossy(&out.stderr).to_string(),
+    )
+}
+
+fn scratch(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("wearfem-sweep-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn json(path: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+const PINS: [&str; 3] = ["[1100,120]", "[1100,140]", "[1100,160]"];
+const FRICTIONS: [&str; 3] = ["0.1", "0.25", "0.4"];
+
+#[test]
+fn every_row_equals_the_single_run_with_its_overrides() {
+    let dir = scratch("nine");
+    let out = dir.join("sweep");
+    let (code, _, err) = wearfem(&[
+        "sweep",
+        "punch-b40",
+        "--set",
+        &format!("plate.pin=[{}]", PINS.join(",")),
+        "--set",
+        &format!("contact.friction=[{}]", FRICTIONS.join(",")),
+        "--steady",
+        "-j",
+        "2",
+        "--quiet",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    // Exit 1 is allowed: with μ = 0.4 the friction moment about a high pin can separate the
+    // half cycles' contact zones, and then no steady state of one rigid wear exists (README).
+    assert!(code == 0 || code == 1, "{err}");
+    let summary = json(&out.join("sweep.json"));
+    let rows = summary["variants"].as_array().unwrap();
+    assert_eq!(rows.len(), 9);
+    let csv = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 9, "{csv}");
+    for (k, row) in rows.iter().enumerate() {
+        let (pin, mu) = (PINS[k / 3], FRICTIONS[k % 3]);
+        let single = dir.join(format!("single-{k}"));
+        let (code1, _, err1) = wearfem(&[
+            "steady",
+            "punch-b40",
+            "--set",
+            &format!("plate.pin={pin}"),
+            "--set",
+            &format!("contact.friction={mu}"),
+            "--out",
+            single.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            code1 == 0,
+            row["converged"].as_bool().unwrap(),
+            "{k}: {err1}"
+        );
+        let s = json(&single.join("summary.json"));
+        let overrides = &row["overrides"];
+        assert_eq!(
+            overrides["contact.friction"].as_f64().unwrap().to_string(),
+            mu
+        );
+        // The same problem solved by the same single-threaded code: equal to round-off. The
+        // bound 1e-12 relative leaves room for a summation order that a future parallel
+        // kernel might change; today the figures agree bit for bit.
+        for (field, theirs) in [("p_plus", &s["p_plus"]), ("shape", &s["shape"])] {
+            let ours = row[field].as_array().unwrap();
+            let theirs = theirs.as_array().unwrap();
+            assert_eq!(ours.len(), theirs.len());
+            let scale = theirs
+                .iter()
+                .map(|v| v.as_f64().unwrap().abs())
+                .fold(0.0, f64::max);
+            for (a, b) in ours.iter().zip(theirs) {
+                let (a, b) = (a.as_f64().unwrap(), b.as_f64().unwrap());
+                assert!(
+                    (a - b).abs() <= 1e-12 * scale,
+                    "variant {k} {field}: {a} vs {b}"
+                );
+            }
+        }
+        let probe = s["p_plus"][0].as_f64().unwrap();
+        let row_probe = row["probes_p_plus"]["M"].as_f64().unwrap();
+        assert!(
+            (probe - row_probe).abs() <= 1e-12 * probe.abs(),
+            "variant {k}: p⁺(M)"
+        );
+        let rigid = s["rigid_wear_per_period"]["lambda_F"].as_f64().unwrap();
+        let row_rigid = row["rigid_wear_per_period"]["lambda_F"].as_f64().unwrap();
+        assert!(
+            (rigid - row_rigid).abs() <= 1e-12 * rigid.abs(),
+            "variant {k}: λ_F"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_bad_key_stops_the_study_before_any_work() {
+    for (set, key) in [
+        ("plate.pinn=[[1100,120]]", "plate.pinn"),
+        ("contact.friction=[0.1, \"high\"]", "contact.friction"),
+        ("contact.friction=[0.1, -1]", "contact.friction"),
+        ("contact.friction", "--set"),
+    ] {
+        let dir = scratch("bad");
+        let (code, _, err) = wearfem(&[
+            "sweep",
+            "punch-b40",
+            "--set",
+            set,
+            "--out",
+            dir.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 2, "{set}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{set}: {err}");
+        assert!(
+            err.contains(key) && !err.contains("panicked"),
+            "{set}: {err}"
+        );
+        assert!(!dir.exists(), "{set}: something was written");
+    }
+}
