@@ -19,8 +19,12 @@ use crate::quadrature::gauss_lobatto;
 use faer::Mat;
 use serde::Deserialize;
 
+mod mortar;
 mod plate;
+mod zone;
+use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
+pub use zone::EdgeEnd;
 
 /// `[contact]` section of a problem file.
 #[derive(Clone, Debug, Deserialize)]
@@ -47,6 +51,10 @@ pub struct ContactSpec {
     pub penalty: Option<f64>,
     /// Optional circular initial shape of body 1: gap g = R − √(R² − (x − x₀)²).
     pub initial_shape: Option<CircleShape>,
+    /// "mortar" (default; body 2 weighted over the overlapping segments, any meshes) or
+    /// "collocation" (one partner point per contact point; needs matching mesh lines).
+    #[serde(default = "mortar")]
+    pub discretisation: String,
 }
 
 /// A circular initial gap (a cylinder of radius `radius` mm touching at x = `center_x`).
@@ -64,6 +72,9 @@ fn plus() -> String {
 }
 fn active_set() -> String {
     "active_set".into()
+}
+fn mortar() -> String {
+    "mortar".into()
 }
 
 /// `[plate]`: the rigid loading plate clamped to an edge of body 1.
@@ -94,7 +105,7 @@ pub struct ContactPoints {
     pub initial_gap: Vec<f64>,
 }
 
-/// One point's displacement as a combination of global dofs: (x dof, z dof, coefficient).
+/// One constraint's displacement as a combination of global dofs: (x dof, z dof, coefficient).
 type Trace = Vec<([usize; 2], f64)>;
 
 /// The contact problem condensed onto the contact points.
@@ -118,6 +129,9 @@ pub struct CondensedContact {
     pub plate_load: Vec<f64>,
     /// Resultant plate force [F_x, F_z] (N) and moment about the pin (N·mm).
     pub plate_resultant: (Point, f64),
+    /// For the first and the last contact point: whether body 1's surface continues beyond
+    /// that end of the named contact edge (see [`CondensedContact::edge_ends_in_contact`]).
+    pub surface_continues: [bool; 2],
 }
 
 fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize, bool)> {
@@ -169,7 +183,7 @@ impl ContactPoints {
     fn on_body1(
         body: &ElasticBody,
         edges: &[(usize, usize)],
-    ) -> Option<(ContactPoints, Vec<Trace>)> {
+    ) -> Option<(ContactPoints, Vec<Trace>, Vec<ChainElement>)> {
         let p = body.dofs.p;
         let rule = gauss_lobatto(p + 1);
         let chain = chain_edge(body, edges);
@@ -184,10 +198,17 @@ impl ContactPoints {
             initial_gap: vec![],
         };
         let mut traces = Vec::new();
+        let mut elements = Vec::new();
         let mut values = vec![0.0; p + 1];
         let mut derivs = vec![0.0; p + 1];
         for (ci, &(element, local, reversed)) in chain.iter().enumerate() {
             let dofs = trace_dofs(&body.dofs, &body.mesh, &body.basis, element, local);
+            elements.push(ChainElement {
+                element,
+                local,
+                reversed,
+                first_point: ci * p,
+            });
             for k in 0..rule.points.len() {
                 let t = if reversed {
                     -rule.points[k]
@@ -221,19 +242,24 @@ impl ContactPoints {
             }
             pts.weight.reverse();
             traces.reverse();
+            // Traverse each element the other way: its node k is then point N − 1 − (first + p − k).
+            let last = pts.x.len() - 1;
+            for c in &mut elements {
+                c.reversed = !c.reversed;
+                c.first_point = last - (c.first_point + p);
+            }
         }
-        Some((pts, traces))
+        Some((pts, traces, elements))
     }
 }
 
-/// Find the point of body 2's edge on the line x + s n and return (s, trace).
-fn project_on_body2(
+/// Find the point of body 2's edge on the line x + s n: (s, element, local edge, t).
+fn locate_on_body2(
     body: &ElasticBody,
     edges: &[(usize, usize)],
     x: Point,
     n: Point,
-) -> Option<(f64, Trace)> {
-    let p = body.dofs.p;
+) -> Option<(f64, usize, usize, f64)> {
     let mut best: Option<(f64, usize, usize, f64)> = None;
     for &(element, local) in edges {
         // Signed distance of edge point y(t) from the normal line: (y − x)·τ, τ ⟂ n; bisection.
@@ -273,7 +299,18 @@ fn project_on_body2(
             best = Some((s, element, local, t));
         }
     }
-    let (s, element, local, t) = best?;
+    best
+}
+
+/// Find the point of body 2's edge on the line x + s n and return (s, trace).
+fn project_on_body2(
+    body: &ElasticBody,
+    edges: &[(usize, usize)],
+    x: Point,
+    n: Point,
+) -> Option<(f64, Trace)> {
+    let p = body.dofs.p;
+    let (s, element, local, t) = locate_on_body2(body, edges, x, n)?;
     let dofs = trace_dofs(&body.dofs, &body.mesh, &body.basis, element, local);
     let mut values = vec![0.0; p + 1];
     let mut derivs = vec![0.0; p + 1];
@@ -308,6 +345,51 @@ fn flexibility(body: &ElasticBody, traces: &[Trace]) -> Mat<f64> {
             .map(|&(g, coef)| coef * rhs[(g[c], col)])
             .sum()
     })
+}
+
+/// Body 2's trace of every constraint, filling in the initial gaps (and, for mortar, the
+/// weights D_ii) of `points`.
+fn body2_traces(
+    problem: &Problem,
+    c: &ContactSpec,
+    body1: &ElasticBody,
+    chain: &[ChainElement],
+    body2: &ElasticBody,
+    edge2: &[(usize, usize)],
+    points: &mut ContactPoints,
+) -> Result<Vec<Trace>, ProblemError> {
+    let shape = |x: Point| {
+        c.initial_shape.map_or(0.0, |sh| {
+            let dx = x[0] - sh.center_x;
+            sh.radius - (sh.radius * sh.radius - dx * dx).max(0.0).sqrt()
+        })
+    };
+    let no_partner = |x: Point| {
+        problem.error("contact.target_edge", format!("contact point ({:.4}, {:.4}) of body 1 has no partner on \"{}\" along its normal (a part of the edge that crosses the normal line and faces body 1)", x[0], x[1], c.target_edge))
+    };
+    match c.discretisation.as_str() {
+        "collocation" => {
+            let mut traces2 = Vec::with_capacity(points.x.len());
+            for i in 0..points.x.len() {
+                let (s, tr) = project_on_body2(body2, edge2, points.x[i], points.normal[i])
+                    .ok_or_else(|| no_partner(points.x[i]))?;
+                points.initial_gap.push(s + shape(points.x[i]));
+                traces2.push(tr);
+            }
+            Ok(traces2)
+        }
+        "mortar" => {
+            let m = mortar_traces(body1, chain, body2, edge2, points.x.len(), shape)
+                .map_err(no_partner)?;
+            points.initial_gap = m.gap;
+            points.weight = m.weight;
+            Ok(m.traces)
+        }
+        other => Err(problem.error(
+            "contact.discretisation",
+            format!("must be \"mortar\" or \"collocation\", got \"{other}\""),
+        )),
+    }
 }
 
 impl CondensedContact {
@@ -388,27 +470,17 @@ impl CondensedContact {
             .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
             .to_vec();
         let t = problem.analysis.thickness();
-        let (mut points, traces1) = ContactPoints::on_body1(body1, &edge1).ok_or_else(|| {
-            problem.error(
-                "contact.edge",
-                format!(
-                    "edge \"{}\" of body 1 is not one connected line of element edges",
-                    c.edge
-                ),
-            )
-        })?;
-        let mut traces2 = Vec::with_capacity(points.x.len());
-        for i in 0..points.x.len() {
-            let (s, tr) = project_on_body2(body2, &edge2, points.x[i], points.normal[i]).ok_or_else(|| {
-                problem.error("contact.target_edge", format!("contact point ({:.4}, {:.4}) of body 1 has no partner on \"{}\" along its normal (a part of the edge that crosses the normal line and faces body 1)", points.x[i][0], points.x[i][1], c.target_edge))
+        let (mut points, traces1, chain) =
+            ContactPoints::on_body1(body1, &edge1).ok_or_else(|| {
+                problem.error(
+                    "contact.edge",
+                    format!(
+                        "edge \"{}\" of body 1 is not one connected line of element edges",
+                        c.edge
+                    ),
+                )
             })?;
-            let shape = c.initial_shape.map_or(0.0, |sh| {
-                let dx = points.x[i][0] - sh.center_x;
-                sh.radius - (sh.radius * sh.radius - dx * dx).max(0.0).sqrt()
-            });
-            points.initial_gap.push(s + shape);
-            traces2.push(tr);
-        }
+        let traces2 = body2_traces(problem, c, body1, &chain, body2, &edge2, &mut points)?;
         // Loads on the bodies themselves (all tractions but the plate's, which load the plate)
         // move the contact points before any contact force acts: their normal displacements
         // enter the gap, d = u_n⁽²⁾ − u_n⁽¹⁾ + g.
@@ -463,6 +535,7 @@ impl CondensedContact {
             rigid_names,
             plate_load,
             plate_resultant,
+            surface_continues: zone::surface_continues(body1, &chain),
         };
         Ok(contact)
     }
@@ -521,6 +594,14 @@ impl CondensedContact {
             }
         }
         e
+    }
+
+    /// The ends of the named contact edge that carry pressure where body 1's surface goes on
+    /// beyond them: there the contact zone is cut by the model, not found by it. `pressures`
+    /// are one or more pressure profiles (MPa, one value per point); an end counts when its
+    /// pressure exceeds 1e-6 of the profile's peak (the solvers' round-off is far below).
+    pub fn edge_ends_in_contact(&self, pressures: &[&[f64]]) -> Vec<EdgeEnd> {
+        zone::ends_in_contact(self, pressures)
     }
 
     /// Whether there are no contact points.
