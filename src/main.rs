@@ -126,6 +126,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let (summary, contact, solution, info) = driver::contact(&p)?;
             wearfem::output::write_contact(&out, &summary, &contact, &solution)?;
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
+            if let Some(w) = driver::edge_ends_warning(&p, &contact.edge_ends_in_contact(&[&solution.pressure])) {
+                eprintln!("{w}");
+            }
             println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
             if info.status == wearfem::complementarity::Status::Failed {
                 return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}); the last iterate was written. A solution may not exist: with a plate that rotates about a pin, friction moves the pressure resultant by μ·l_z, and if that leaves the contact the plate tips", info.complementarity, info.equilibrium)));
@@ -162,6 +165,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 None => vec!["no steps".to_string()],
             };
             println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '{first}' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
+            if let Some(w) = driver::edge_ends_warning(&p, &result.edge_ends()) {
+                eprintln!("{w}");
+            }
             if let Some(step) = h.stopped_at {
                 return Err(Failure::Compute(format!("the wear increment of step {step} is not finite (β̃, the exponents or the load are far out of range); the run stopped there and the steps before it were written to {}", out.display())));
             }
@@ -191,6 +197,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 probes.join(", "),
                 out.display()
             );
+            if let Some(w) = driver::edge_ends_warning(&p, &driver::steady_edge_ends(&contact, &state)) {
+                eprintln!("{w}");
+            }
             if state.status != wearfem::steady::SteadyStatus::Solved {
                 return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); the last iterate was written. If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }
