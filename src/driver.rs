@@ -265,7 +265,11 @@ pub fn edge_ends_json(ends: &[crate::contact::EdgeEnd]) -> Value {
 /// The console warning for `ends` (None when there are none): the contact zone was cut by
 /// where the contact edge was named, not found by the model.
 pub fn edge_ends_warning(problem: &Problem, ends: &[crate::contact::EdgeEnd]) -> Option<String> {
-    let edge = problem.spec.contact.as_ref().map_or("", |c| c.edge.as_str());
+    let edge = problem
+        .spec
+        .contact
+        .as_ref()
+        .map_or("", |c| c.edge.as_str());
     ends.first()?;
     let at: Vec<String> = ends
         .iter()

@@ -28,7 +28,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         include_str!("../examples/punch-b20-variant2.toml"),
     ),
     ("brake", include_str!("../examples/brake.toml")),
-    ("brake-independent", include_str!("../examples/brake-independent.toml")),
+    (
+        "brake-independent",
+        include_str!("../examples/brake-independent.toml"),
+    ),
     ("pin", include_str!("../examples/pin.toml")),
 ];
 

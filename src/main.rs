@@ -126,7 +126,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let (summary, contact, solution, info) = driver::contact(&p)?;
             wearfem::output::write_contact(&out, &summary, &contact, &solution)?;
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
-            if let Some(w) = driver::edge_ends_warning(&p, &contact.edge_ends_in_contact(&[&solution.pressure])) {
+            if let Some(w) =
+                driver::edge_ends_warning(&p, &contact.edge_ends_in_contact(&[&solution.pressure]))
+            {
                 eprintln!("{w}");
             }
             println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
@@ -197,7 +199,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 probes.join(", "),
                 out.display()
             );
-            if let Some(w) = driver::edge_ends_warning(&p, &driver::steady_edge_ends(&contact, &state)) {
+            if let Some(w) =
+                driver::edge_ends_warning(&p, &driver::steady_edge_ends(&contact, &state))
+            {
                 eprintln!("{w}");
             }
             if state.status != wearfem::steady::SteadyStatus::Solved {

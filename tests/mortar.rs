@@ -24,7 +24,10 @@ fn lines(lo: f64, hi: f64, h: f64, span: f64, offset: f64, outer: &[f64]) -> Str
     x.push(lo);
     x.push(hi);
     x.sort_by(f64::total_cmp);
-    let f: Vec<String> = x.iter().map(|v| format!("{:.12}", (v - lo) / (hi - lo))).collect();
+    let f: Vec<String> = x
+        .iter()
+        .map(|v| format!("{:.12}", (v - lo) / (hi - lo)))
+        .collect();
     format!("[{}]", f.join(", "))
 }
 
@@ -164,7 +167,11 @@ fn hertz_line_contact_on_non_matching_meshes() {
         // a = √(4 F R / (π E*)), p0 = 2F / (π a); F = 38.825 MPa × 40 mm per mm of thickness.
         let force = 38.825 * 40.0;
         let (e, nu) = (2.0e5f64, 0.3f64);
-        let e_one = if kind == "plane_strain" { e / (1.0 - nu * nu) } else { e };
+        let e_one = if kind == "plane_strain" {
+            e / (1.0 - nu * nu)
+        } else {
+            e
+        };
         let e_star = e_one / 2.0;
         let a = (4.0 * force * 500.0 / (std::f64::consts::PI * e_star)).sqrt();
         let p0 = 2.0 * force / (std::f64::consts::PI * a);
@@ -178,19 +185,31 @@ fn hertz_line_contact_on_non_matching_meshes() {
             let a_fit = half_width(&contact, &sol);
             // 2 %: the bound; the finite bodies (2a ≈ 6 mm against 40 and 100 mm)
             // change the closed form by well under that.
-            assert!((peak - p0).abs() < 0.02 * p0, "{kind} {h1}:{h2}: peak {peak:.3} MPa, Hertz {p0:.3}");
-            assert!((a_fit - a).abs() < 0.02 * a, "{kind} {h1}:{h2}: half-width {a_fit:.4} mm, Hertz {a:.4}");
+            assert!(
+                (peak - p0).abs() < 0.02 * p0,
+                "{kind} {h1}:{h2}: peak {peak:.3} MPa, Hertz {p0:.3}"
+            );
+            assert!(
+                (a_fit - a).abs() < 0.02 * a,
+                "{kind} {h1}:{h2}: half-width {a_fit:.4} mm, Hertz {a:.4}"
+            );
             // Point-to-point oscillation, judged where the profile is smooth (|x| < 0.8 a,
             // p > 0.6 p0): nearer the edges the square-root fall of the pressure is not a
             // polynomial inside an element, on matched meshes as well.
             let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
             let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * p0);
-            assert!(osc < 0.01 * peak, "{kind} {h1}:{h2}: oscillation {osc:.3} MPa, peak {peak:.3}");
+            assert!(
+                osc < 0.01 * peak,
+                "{kind} {h1}:{h2}: oscillation {osc:.3} MPa, peak {peak:.3}"
+            );
             // The same meshes with one partner point per contact point oscillate by more: the
             // check above can see the defect mortar removes.
             let (_, sol) = solve(&hertz(kind, h1, h2, "collocation"));
             let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * p0);
-            assert!(osc > 0.01 * peak, "{kind} {h1}:{h2}: collocation oscillation only {osc:.3} MPa");
+            assert!(
+                osc > 0.01 * peak,
+                "{kind} {h1}:{h2}: collocation oscillation only {osc:.3} MPa"
+            );
         }
     }
 }
@@ -262,14 +281,28 @@ fn patch_test_uniform_pressure_crosses_non_matching_meshes() {
     // must reproduce it to round-off. 1e-8: the bound (round-off is ~1e-12 here).
     for p in [2, 5, 8] {
         let (_, sol) = solve(&patch("mortar", p));
-        let worst = sol.pressure.iter().map(|v| (v - 10.0).abs()).fold(0.0, f64::max);
-        assert!(worst < 1e-8 * 10.0, "p = {p}: pressure off by {worst:.3e} MPa");
+        let worst = sol
+            .pressure
+            .iter()
+            .map(|v| (v - 10.0).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            worst < 1e-8 * 10.0,
+            "p = {p}: pressure off by {worst:.3e} MPa"
+        );
     }
     // Collocation loads body 2 with point forces at the partner points, which are not the
     // consistent loads of a uniform pressure across body 2's element ends: it fails the test.
     let (_, sol) = solve(&patch("collocation", 8));
-    let worst = sol.pressure.iter().map(|v| (v - 10.0).abs()).fold(0.0, f64::max);
-    assert!(worst > 1e-4 * 10.0, "collocation passes the patch test ({worst:.3e} MPa)");
+    let worst = sol
+        .pressure
+        .iter()
+        .map(|v| (v - 10.0).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        worst > 1e-4 * 10.0,
+        "collocation passes the patch test ({worst:.3e} MPa)"
+    );
 }
 
 fn punch(even: bool, discretisation: &str) -> Problem {
@@ -291,7 +324,9 @@ fn punch(even: bool, discretisation: &str) -> Problem {
 /// root-mean-square difference over all points.
 fn differences(a: &[f64], b: &[f64], skip: usize) -> (f64, f64) {
     let n = a.len();
-    let max = (skip..n - skip).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max);
+    let max = (skip..n - skip)
+        .map(|i| (a[i] - b[i]).abs())
+        .fold(0.0, f64::max);
     let rms = (a.iter().zip(b).map(|(x, y)| (x - y).powi(2)).sum::<f64>() / n as f64).sqrt();
     (max, rms)
 }
@@ -309,24 +344,45 @@ fn punch_on_an_evenly_meshed_strip_matches_the_matched_mesh() {
     // the second point, with collocation just as with mortar: a resolution limit of body 2, not
     // of the coupling; docs/validation.md).
     let (max, _) = differences(&even.pressure, &matched.pressure, 4);
-    assert!(max < 0.02 * peak, "first solve: {max:.3} MPa off, peak {peak:.3}");
+    assert!(
+        max < 0.02 * peak,
+        "first solve: {max:.3} MPa off, peak {peak:.3}"
+    );
     assert_eq!(contact.len(), 65);
     // The steady state: p⁺ + p⁻ = 2p̃ = 33.333 MPa holds on any mesh (paper eq. 23a); p⁺ itself
     // within 1 % r.m.s. of the peak 2p̃ (pointwise up to 3 % at the two ends of the p⁺ zone,
     // where its slope jumps inside a strip element).
-    let st_matched = wearfem::driver::steady(&punch(false, "collocation")).unwrap().0;
+    let st_matched = wearfem::driver::steady(&punch(false, "collocation"))
+        .unwrap()
+        .0;
     let st_even = wearfem::driver::steady(&punch(true, "mortar")).unwrap().0;
     let sum = |s: &wearfem::steady::SteadyState| -> Vec<f64> {
-        s.p_plus.iter().zip(&s.p_minus).map(|(a, b)| a + b).collect()
+        s.p_plus
+            .iter()
+            .zip(&s.p_minus)
+            .map(|(a, b)| a + b)
+            .collect()
     };
     let (max, _) = differences(&sum(&st_even), &sum(&st_matched), 0);
-    assert!(max < 1e-6 * 33.333, "steady p⁺ + p⁻ differs by {max:.3e} MPa");
+    assert!(
+        max < 1e-6 * 33.333,
+        "steady p⁺ + p⁻ differs by {max:.3e} MPa"
+    );
     let (max, rms) = differences(&st_even.p_plus, &st_matched.p_plus, 0);
-    assert!(rms < 0.01 * 33.333 && max < 0.03 * 33.333, "steady p⁺: max {max:.3} MPa, r.m.s. {rms:.3} MPa");
+    assert!(
+        rms < 0.01 * 33.333 && max < 0.03 * 33.333,
+        "steady p⁺: max {max:.3} MPa, r.m.s. {rms:.3} MPa"
+    );
     // The 1700-step run's last cycle, judged the same way (pointwise up to 3.1 % at the p⁺
     // zone's ends here, 4 % allowed).
     let run = |p: &Problem| wearfem::driver::wear(p, None, |_| {}).unwrap().history;
-    let (h_matched, h_even) = (run(&punch(false, "collocation")), run(&punch(true, "mortar")));
+    let (h_matched, h_even) = (
+        run(&punch(false, "collocation")),
+        run(&punch(true, "mortar")),
+    );
     let (max, rms) = differences(&h_even.p_plus, &h_matched.p_plus, 0);
-    assert!(rms < 0.01 * 33.333 && max < 0.04 * 33.333, "run p⁺: max {max:.3} MPa, r.m.s. {rms:.3} MPa");
+    assert!(
+        rms < 0.01 * 33.333 && max < 0.04 * 33.333,
+        "run p⁺: max {max:.3} MPa, r.m.s. {rms:.3} MPa"
+    );
 }

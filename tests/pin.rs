@@ -52,7 +52,9 @@ fn first_contact_is_reported_cut_only_when_it_reaches_a_continuing_end() {
     // Named over ±2 mm only: the contact reaches both ends, where the arc goes on.
     let ends = first_solve_ends(&continuing_arc(2.0));
     assert_eq!(ends.len(), 2, "{ends:?}");
-    assert!(ends.iter().all(|e| (e.x[0].abs() - 2.0).abs() < 1e-9 && e.pressure > 0.0));
+    assert!(ends
+        .iter()
+        .all(|e| (e.x[0].abs() - 2.0).abs() < 1e-9 && e.pressure > 0.0));
 }
 
 #[test]
@@ -81,12 +83,18 @@ fn run_approaches_the_steady_state_as_it_lengthens() {
             .zip(&steady.p_plus)
             .map(|(a, b)| (a - b).abs())
             .fold(0.0, f64::max);
-        assert!(distance < previous, "{steps} steps: {distance:.3} MPa, before {previous:.3}");
+        assert!(
+            distance < previous,
+            "{steps} steps: {distance:.3} MPa, before {previous:.3}"
+        );
         previous = distance;
         assert!(run.edge_ends().is_empty());
     }
     // At 8000 steps (39 800 half periods) the cap is worn flat: p⁺ within 1 % of its peak,
     // 2 × 20 MPa (the run's last half cycle against the exact periodic state; the remaining
     // difference sits where p⁺ falls to zero and its slope jumps).
-    assert!(previous < 0.01 * 40.0, "p⁺ differs from the steady state by {previous:.3} MPa");
+    assert!(
+        previous < 0.01 * 40.0,
+        "p⁺ differs from the steady state by {previous:.3} MPa"
+    );
 }

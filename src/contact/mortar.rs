@@ -141,7 +141,12 @@ fn invert(m: &[f64], n: usize) -> Vec<f64> {
 
 /// Parameters s ∈ (−1, 1) of body 1's element where the normal line passes through one of
 /// body 2's element ends: the kinks of the integrand.
-fn break_points(body1: &ElasticBody, c: &ChainElement, body2: &ElasticBody, edges2: &[(usize, usize)]) -> Vec<f64> {
+fn break_points(
+    body1: &ElasticBody,
+    c: &ChainElement,
+    body2: &ElasticBody,
+    edges2: &[(usize, usize)],
+) -> Vec<f64> {
     let point = |s: f64| {
         let t = if c.reversed { -s } else { s };
         let (tangent, _) = body1.mesh.edge_frame(c.element, c.local, t);

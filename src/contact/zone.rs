@@ -54,23 +54,31 @@ pub(super) fn surface_continues(body: &ElasticBody, chain: &[ChainElement]) -> [
     };
     let continues = |(vertex, out): (usize, Point)| {
         body.mesh.edges.iter().enumerate().any(|(id, edge)| {
-            if edge.elements.len() != 1 || in_chain.contains(&id) || !edge.vertices.contains(&vertex)
+            if edge.elements.len() != 1
+                || in_chain.contains(&id)
+                || !edge.vertices.contains(&vertex)
             {
                 return false;
             }
             let (e, l) = edge.elements[0];
             let from_start = body.mesh.elements[e].vertices[EDGE_ENDPOINTS[l].0] == vertex;
-            let (tangent, _) = body.mesh.edge_frame(e, l, if from_start { -1.0 } else { 1.0 });
+            let (tangent, _) = body
+                .mesh
+                .edge_frame(e, l, if from_start { -1.0 } else { 1.0 });
             let dir = if from_start {
                 tangent
             } else {
                 [-tangent[0], -tangent[1]]
             };
-            let cos = (dir[0] * out[0] + dir[1] * out[1]) / (dir[0].hypot(dir[1]) * out[0].hypot(out[1]));
+            let cos =
+                (dir[0] * out[0] + dir[1] * out[1]) / (dir[0].hypot(dir[1]) * out[0].hypot(out[1]));
             cos > CONTINUES_COS
         })
     };
-    [continues(leaving(first, false)), continues(leaving(last, true))]
+    [
+        continues(leaving(first, false)),
+        continues(leaving(last, true)),
+    ]
 }
 
 /// The ends that continue and carry pressure in any of `pressures`.
