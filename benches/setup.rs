@@ -19,9 +19,10 @@ fn problem() -> Problem {
 
 /// punch-b40 with `contact.discretisation = "collocation"`, for the mortar set-up's cost.
 fn collocation_problem() -> Problem {
-    let text = wearfem::examples::example("punch-b40")
-        .unwrap()
-        .replace("friction = 0.25\n", "friction = 0.25\ndiscretisation = \"collocation\"\n");
+    let text = wearfem::examples::example("punch-b40").unwrap().replace(
+        "friction = 0.25\n",
+        "friction = 0.25\ndiscretisation = \"collocation\"\n",
+    );
     Problem::from_toml(&text, "punch-b40").unwrap()
 }
 

@@ -1,6 +1,8 @@
-//! Contact geometry and condensation: the contact points on body 1, their partners on body 2,
-//! the rigid loading plate, and the flexibility (Green) matrices that reduce both finite
-//! element models to the contact points once and for all.
+//! Contact geometry and condensation: the contact points on body 1, body 2's side of each
+//! (mortar traces weighted over the overlapping segments, [`mortar`]'s docs give the method;
+//! or one partner point, "collocation"), the rigid loading plate, and the flexibility (Green)
+//! matrices that reduce both finite element models to the contact points once and for all.
+//! Contact zones cut by the end of the named edge are found by [`zone`]'s rules.
 //!
 //! Sign conventions (paper eq. 2–3, 42): n_c is body 1's outward normal (into body 2), τ is n_c
 //! turned by +90° (τ = +e_x under a flat punch). The force of body 2 on body 1 at point i is
@@ -19,9 +21,9 @@ use crate::quadrature::gauss_lobatto;
 use faer::Mat;
 use serde::Deserialize;
 
-mod mortar;
+pub mod mortar;
 mod plate;
-mod zone;
+pub mod zone;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
 pub use zone::EdgeEnd;
