@@ -11,8 +11,8 @@ use wearfem::problem::Problem;
 
 fn punch_b40(discretisation: &str) -> Problem {
     let text = wearfem::examples::example("punch-b40").unwrap().replace(
-        "friction = 0.25\n",
-        &format!("friction = 0.25\ndiscretisation = \"{discretisation}\"\n"),
+        "discretisation = \"collocation\"",
+        &format!("discretisation = \"{discretisation}\""),
     );
     Problem::from_toml(&text, "punch-b40").unwrap()
 }

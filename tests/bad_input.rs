@@ -138,8 +138,8 @@ fn broken_contact_plate_and_wear_sections() {
     let cases = [
         ("friction = 0.25", "friction = -0.25", "contact.friction"),
         (
-            "friction = 0.25",
-            "friction = 0.25\ndiscretisation = \"segment\"",
+            "discretisation = \"collocation\"",
+            "discretisation = \"segment\"",
             "contact.discretisation",
         ),
         (

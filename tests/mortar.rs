@@ -314,8 +314,8 @@ fn punch(even: bool, discretisation: &str) -> Problem {
         );
     }
     text = text.replace(
-        "friction = 0.25\n",
-        &format!("friction = 0.25\ndiscretisation = \"{discretisation}\"\n"),
+        "discretisation = \"collocation\"",
+        &format!("discretisation = \"{discretisation}\""),
     );
     Problem::from_toml(&text, "punch-b40").unwrap()
 }
