@@ -12,6 +12,10 @@ fn pin() -> Problem {
 /// The pin's end as one arc of radius 4000 mm from x = −20 to 20 mm in three blocks, of which
 /// only the middle one (|x| ≤ `half`) is named `cap`: the surface goes on beyond both ends.
 fn continuing_arc(half: f64) -> Problem {
+    Problem::from_toml(&continuing_arc_text(half), "continuing-arc").unwrap()
+}
+
+fn continuing_arc_text(half: f64) -> String {
     let text = wearfem::examples::example("pin").unwrap();
     let z = |x: f64| 4000.0 - (4000.0f64 * 4000.0 - x * x).sqrt();
     let start = text.find("[[bodies.blocks]]").unwrap();
@@ -26,8 +30,7 @@ fn continuing_arc(half: f64) -> Problem {
     let blocks = block(-20.0, -half, 4, "{ top = \"top\" }")
         + &block(-half, half, 20, "{ bottom = \"cap\", top = \"top\" }")
         + &block(half, 20.0, 4, "{ top = \"top\" }");
-    let text = format!("{}{}{}", &text[..start], blocks, &text[end..]);
-    Problem::from_toml(&text, "continuing-arc").unwrap()
+    format!("{}{}{}", &text[..start], blocks, &text[end..])
 }
 
 fn first_solve_ends(problem: &Problem) -> Vec<wearfem::contact::EdgeEnd> {
@@ -97,4 +100,43 @@ fn run_approaches_the_steady_state_as_it_lengthens() {
         previous < 0.01 * 40.0,
         "p⁺ differs from the steady state by {previous:.3} MPa"
     );
+}
+
+#[test]
+fn the_command_line_warns_and_writes_the_cut_ends() {
+    // `wearfem contact` on the ±2 mm cap: a warning line on stderr, both ends in summary.json;
+    // on the shipped pin neither.
+    let dir = std::env::temp_dir().join(format!("wearfem-pin-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (text, cut) in [
+        (continuing_arc_text(2.0), true),
+        (
+            wearfem::examples::example("pin").unwrap().to_string(),
+            false,
+        ),
+    ] {
+        let file = dir.join("pin.toml");
+        std::fs::write(&file, text).unwrap();
+        let out = dir.join("out");
+        let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .arg("contact")
+            .arg(&file)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(result.status.success());
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert_eq!(
+            stderr.contains("warning:") && stderr.contains("\"cap\""),
+            cut,
+            "{stderr}"
+        );
+        let summary: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
+                .unwrap();
+        let ends = summary["edge_ends_in_contact"].as_array().unwrap();
+        assert_eq!(ends.len(), if cut { 2 } else { 0 });
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }
