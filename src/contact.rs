@@ -97,7 +97,8 @@ pub struct PlateSpec {
 pub struct ContactPoints {
     /// Coordinates [x, z] of the points on body 1, mm, ordered along the edge (x rising).
     pub x: Vec<Point>,
-    /// Integration weight of each point (Lobatto weight × edge Jacobian), mm.
+    /// Integration weight of each point, mm: the Lobatto weight × edge Jacobian (collocation),
+    /// or D_ii = ∫ N_i ds (mortar; the same on straight edges). Contact area = weight × t.
     pub weight: Vec<f64>,
     /// Unit normal n_c (into body 2).
     pub normal: Vec<Point>,

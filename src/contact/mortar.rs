@@ -25,7 +25,7 @@
 //! area of point i is D_ii t. On a straight edge D_ii is the Lobatto weight times the edge
 //! Jacobian, the collocation weight.
 //!
-//! Body 2's part is a trace of the same form as a point's: Σ coef · u[dof] with
+//! Body 2's part is a trace of the same form as a point's: Σ coef · u(dof) with
 //! coef = (1/D_ii) ∫ ψ_i(x) N⁽²⁾_k(π(x)) ds, so the flexibility and everything after it are
 //! unchanged.
 //!
@@ -57,7 +57,7 @@ pub(super) struct ChainElement {
 
 /// Body 2's part of every constraint and the constraint weights.
 pub(super) struct MortarTraces {
-    /// Body 2's trace of each constraint (Σ coef · u[dof] per component).
+    /// Body 2's trace of each constraint (Σ coef · u(dof) per component).
     pub traces: Vec<Trace>,
     /// (1/D_ii) ∫ ψ_i g₀ ds, mm (g₀ the geometric gap along n(x) plus the initial shape).
     pub gap: Vec<f64>,
