@@ -1,6 +1,8 @@
-//! Contact geometry and condensation: the contact points on body 1, their partners on body 2,
-//! the rigid loading plate, and the flexibility (Green) matrices that reduce both finite
-//! element models to the contact points once and for all.
+//! Contact geometry and condensation: the contact points on body 1, body 2's side of each
+//! (mortar traces weighted over the overlapping segments, [`mortar`]'s docs give the method;
+//! or one partner point, "collocation"), the rigid loading plate, and the flexibility (Green)
+//! matrices that reduce both finite element models to the contact points once and for all.
+//! Contact zones cut by the end of the named edge are found by [`zone`]'s rules.
 //!
 //! Sign conventions (paper eq. 2–3, 42): n_c is body 1's outward normal (into body 2), τ is n_c
 //! turned by +90° (τ = +e_x under a flat punch). The force of body 2 on body 1 at point i is
@@ -19,8 +21,12 @@ use crate::quadrature::gauss_lobatto;
 use faer::Mat;
 use serde::Deserialize;
 
+pub mod mortar;
 mod plate;
+pub mod zone;
+use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
+pub use zone::EdgeEnd;
 
 /// `[contact]` section of a problem file.
 #[derive(Clone, Debug, Deserialize)]
@@ -47,6 +53,10 @@ pub struct ContactSpec {
     pub penalty: Option<f64>,
     /// Optional circular initial shape of body 1: gap g = R − √(R² − (x − x₀)²).
     pub initial_shape: Option<CircleShape>,
+    /// "mortar" (default; body 2 weighted over the overlapping segments, any meshes) or
+    /// "collocation" (one partner point per contact point; needs matching mesh lines).
+    #[serde(default = "mortar")]
+    pub discretisation: String,
 }
 
 /// A circular initial gap (a cylinder of radius `radius` mm touching at x = `center_x`).
@@ -64,6 +74,9 @@ fn plus() -> String {
 }
 fn active_set() -> String {
     "active_set".into()
+}
+fn mortar() -> String {
+    "mortar".into()
 }
 
 /// `[plate]`: the rigid loading plate clamped to an edge of body 1.
@@ -84,7 +97,8 @@ pub struct PlateSpec {
 pub struct ContactPoints {
     /// Coordinates [x, z] of the points on body 1, mm, ordered along the edge (x rising).
     pub x: Vec<Point>,
-    /// Integration weight of each point (Lobatto weight × edge Jacobian), mm.
+    /// Integration weight of each point, mm: the Lobatto weight × edge Jacobian (collocation),
+    /// or D_ii = ∫ N_i ds (mortar; the same on straight edges). Contact area = weight × t.
     pub weight: Vec<f64>,
     /// Unit normal n_c (into body 2).
     pub normal: Vec<Point>,
@@ -96,7 +110,7 @@ pub struct ContactPoints {
     pub partner: Vec<Point>,
 }
 
-/// One point's displacement as a combination of global dofs: (x dof, z dof, coefficient).
+/// One constraint's displacement as a combination of global dofs: (x dof, z dof, coefficient).
 type Trace = Vec<([usize; 2], f64)>;
 
 /// The contact problem condensed onto the contact points.
@@ -120,6 +134,9 @@ pub struct CondensedContact {
     pub plate_load: Vec<f64>,
     /// Resultant plate force [F_x, F_z] (N) and moment about the pin (N·mm).
     pub plate_resultant: (Point, f64),
+    /// For the first and the last contact point: whether body 1's surface continues beyond
+    /// that end of the named contact edge (see [`CondensedContact::edge_ends_in_contact`]).
+    pub surface_continues: [bool; 2],
 }
 
 fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize, bool)> {
@@ -171,7 +188,7 @@ impl ContactPoints {
     fn on_body1(
         body: &ElasticBody,
         edges: &[(usize, usize)],
-    ) -> Option<(ContactPoints, Vec<Trace>)> {
+    ) -> Option<(ContactPoints, Vec<Trace>, Vec<ChainElement>)> {
         let p = body.dofs.p;
         let rule = gauss_lobatto(p + 1);
         let chain = chain_edge(body, edges);
@@ -187,10 +204,17 @@ impl ContactPoints {
             partner: vec![],
         };
         let mut traces = Vec::new();
+        let mut elements = Vec::new();
         let mut values = vec![0.0; p + 1];
         let mut derivs = vec![0.0; p + 1];
         for (ci, &(element, local, reversed)) in chain.iter().enumerate() {
             let dofs = trace_dofs(&body.dofs, &body.mesh, &body.basis, element, local);
+            elements.push(ChainElement {
+                element,
+                local,
+                reversed,
+                first_point: ci * p,
+            });
             for k in 0..rule.points.len() {
                 let t = if reversed {
                     -rule.points[k]
@@ -224,19 +248,24 @@ impl ContactPoints {
             }
             pts.weight.reverse();
             traces.reverse();
+            // Traverse each element the other way: its node k is then point N − 1 − (first + p − k).
+            let last = pts.x.len() - 1;
+            for c in &mut elements {
+                c.reversed = !c.reversed;
+                c.first_point = last - (c.first_point + p);
+            }
         }
-        Some((pts, traces))
+        Some((pts, traces, elements))
     }
 }
 
-/// Find the point of body 2's edge on the line x + s n and return (s, the point, trace).
-fn project_on_body2(
+/// Find the point of body 2's edge on the line x + s n: (s, element, local edge, t).
+fn locate_on_body2(
     body: &ElasticBody,
     edges: &[(usize, usize)],
     x: Point,
     n: Point,
-) -> Option<(f64, Point, Trace)> {
-    let p = body.dofs.p;
+) -> Option<(f64, usize, usize, f64)> {
     let mut best: Option<(f64, usize, usize, f64)> = None;
     for &(element, local) in edges {
         // Signed distance of edge point y(t) from the normal line: (y − x)·τ, τ ⟂ n; bisection.
@@ -276,7 +305,18 @@ fn project_on_body2(
             best = Some((s, element, local, t));
         }
     }
-    let (s, element, local, t) = best?;
+    best
+}
+
+/// Find the point of body 2's edge on the line x + s n and return (s, the point, trace).
+fn project_on_body2(
+    body: &ElasticBody,
+    edges: &[(usize, usize)],
+    x: Point,
+    n: Point,
+) -> Option<(f64, Point, Trace)> {
+    let p = body.dofs.p;
+    let (s, element, local, t) = locate_on_body2(body, edges, x, n)?;
     let partner = body.mesh.point_on_edge(element, local, t);
     let dofs = trace_dofs(&body.dofs, &body.mesh, &body.basis, element, local);
     let mut values = vec![0.0; p + 1];
@@ -302,6 +342,64 @@ fn flexibility(
 ) -> Result<Mat<f64>, ProblemError> {
     body.trace_flexibility(traces)
         .map_err(|e| problem.error("contact", e.to_string()))
+}
+
+/// Body 2's trace of every constraint, filling in the initial gaps (and, for mortar, the
+/// weights D_ii) of `points`.
+fn body2_traces(
+    problem: &Problem,
+    c: &ContactSpec,
+    body1: &ElasticBody,
+    chain: &[ChainElement],
+    body2: &ElasticBody,
+    edge2: &[(usize, usize)],
+    points: &mut ContactPoints,
+) -> Result<Vec<Trace>, ProblemError> {
+    let shape = |x: Point| {
+        c.initial_shape.map_or(0.0, |sh| {
+            let dx = x[0] - sh.center_x;
+            sh.radius - (sh.radius * sh.radius - dx * dx).max(0.0).sqrt()
+        })
+    };
+    let no_partner = |x: Point| {
+        problem.error("contact.target_edge", format!("contact point ({:.4}, {:.4}) of body 1 has no partner on \"{}\" along its normal (a part of the edge that crosses the normal line and faces body 1)", x[0], x[1], c.target_edge))
+    };
+    match c.discretisation.as_str() {
+        "collocation" => {
+            let mut traces2 = Vec::with_capacity(points.x.len());
+            for i in 0..points.x.len() {
+                let (s, partner, tr) =
+                    project_on_body2(body2, edge2, points.x[i], points.normal[i])
+                        .ok_or_else(|| no_partner(points.x[i]))?;
+                points.initial_gap.push(s + shape(points.x[i]));
+                points.partner.push(partner);
+                traces2.push(tr);
+            }
+            Ok(traces2)
+        }
+        "mortar" => {
+            let m = mortar_traces(body1, chain, body2, edge2, points.x.len(), shape)
+                .map_err(no_partner)?;
+            points.initial_gap = m.gap;
+            points.weight = m.weight;
+            // The point of body 2 facing each contact point (for post-processing; the
+            // constraint itself couples body 2 through the mortar trace). Where the normal
+            // line misses body 2's edge, the contact point itself stands in.
+            points.partner = (0..points.x.len())
+                .map(|i| {
+                    locate_on_body2(body2, edge2, points.x[i], points.normal[i])
+                        .map_or(points.x[i], |(_, e, l, t)| {
+                            body2.mesh.point_on_edge(e, l, t)
+                        })
+                })
+                .collect();
+            Ok(m.traces)
+        }
+        other => Err(problem.error(
+            "contact.discretisation",
+            format!("must be \"mortar\" or \"collocation\", got \"{other}\""),
+        )),
+    }
 }
 
 impl CondensedContact {
@@ -382,28 +480,17 @@ impl CondensedContact {
             .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
             .to_vec();
         let t = problem.analysis.thickness();
-        let (mut points, traces1) = ContactPoints::on_body1(body1, &edge1).ok_or_else(|| {
-            problem.error(
-                "contact.edge",
-                format!(
-                    "edge \"{}\" of body 1 is not one connected line of element edges",
-                    c.edge
-                ),
-            )
-        })?;
-        let mut traces2 = Vec::with_capacity(points.x.len());
-        for i in 0..points.x.len() {
-            let (s, partner, tr) = project_on_body2(body2, &edge2, points.x[i], points.normal[i]).ok_or_else(|| {
-                problem.error("contact.target_edge", format!("contact point ({:.4}, {:.4}) of body 1 has no partner on \"{}\" along its normal (a part of the edge that crosses the normal line and faces body 1)", points.x[i][0], points.x[i][1], c.target_edge))
+        let (mut points, traces1, chain) =
+            ContactPoints::on_body1(body1, &edge1).ok_or_else(|| {
+                problem.error(
+                    "contact.edge",
+                    format!(
+                        "edge \"{}\" of body 1 is not one connected line of element edges",
+                        c.edge
+                    ),
+                )
             })?;
-            let shape = c.initial_shape.map_or(0.0, |sh| {
-                let dx = points.x[i][0] - sh.center_x;
-                sh.radius - (sh.radius * sh.radius - dx * dx).max(0.0).sqrt()
-            });
-            points.initial_gap.push(s + shape);
-            points.partner.push(partner);
-            traces2.push(tr);
-        }
+        let traces2 = body2_traces(problem, c, body1, &chain, body2, &edge2, &mut points)?;
         // Loads on the bodies themselves (all tractions but the plate's, which load the plate)
         // move the contact points before any contact force acts: their normal displacements
         // enter the gap, d = u_n⁽²⁾ − u_n⁽¹⁾ + g.
@@ -458,6 +545,7 @@ impl CondensedContact {
             rigid_names,
             plate_load,
             plate_resultant,
+            surface_continues: zone::surface_continues(body1, &chain),
         };
         Ok(contact)
     }
@@ -516,6 +604,14 @@ impl CondensedContact {
             }
         }
         e
+    }
+
+    /// The ends of the named contact edge that carry pressure where body 1's surface goes on
+    /// beyond them: there the contact zone is cut by the model, not found by it. `pressures`
+    /// are one or more pressure profiles (MPa, one value per point); an end counts when its
+    /// pressure exceeds 1e-6 of the profile's peak (the solvers' round-off is far below).
+    pub fn edge_ends_in_contact(&self, pressures: &[&[f64]]) -> Vec<EdgeEnd> {
+        zone::ends_in_contact(self, pressures)
     }
 
     /// Whether there are no contact points.

@@ -234,6 +234,7 @@ pub fn contact(
         "solve": info_json(&info),
         "plate_force": numbers(&contact.plate_resultant.0),
         "plate_moment": number(contact.plate_resultant.1),
+        "edge_ends_in_contact": edge_ends_json(&contact.edge_ends_in_contact(&[&solution.pressure])),
         "setup_seconds": setup,
     });
     // A failed solve is returned too (status in `info`): the caller writes it and says so.
@@ -326,11 +327,56 @@ pub fn wear(
     })
 }
 
+/// `edge_ends_in_contact` of summary.json: one object per end of the named contact edge that
+/// carries pressure where body 1's surface goes on (`point` index, `x`, `z` mm, `pressure`
+/// MPa); an empty list when the contact zone lies inside the edge or ends at corners.
+pub fn edge_ends_json(ends: &[crate::contact::EdgeEnd]) -> Value {
+    Value::Array(
+        ends.iter()
+            .map(|e| json!({ "point": e.point, "x": number(e.x[0]), "z": number(e.x[1]), "pressure": number(e.pressure) }))
+            .collect(),
+    )
+}
+
+/// The console warning for `ends` (None when there are none): the contact zone was cut by
+/// where the contact edge was named, not found by the model.
+pub fn edge_ends_warning(problem: &Problem, ends: &[crate::contact::EdgeEnd]) -> Option<String> {
+    let edge = problem
+        .spec
+        .contact
+        .as_ref()
+        .map_or("", |c| c.edge.as_str());
+    ends.first()?;
+    let at: Vec<String> = ends
+        .iter()
+        .map(|e| format!("({:.4}, {:.4}) with {:.4} MPa", e.x[0], e.x[1], e.pressure))
+        .collect();
+    Some(format!(
+        "warning: {}: the contact reaches the end of contact edge \"{edge}\" at {} where body 1's surface goes on: the contact zone is bounded by the model, not found by it; name a longer edge (docs/problem-files.md, [contact])",
+        problem.file,
+        at.join(" and ")
+    ))
+}
+
+/// The edge ends in contact in a steady state (either half cycle).
+pub fn steady_edge_ends(
+    contact: &CondensedContact,
+    state: &crate::steady::SteadyState,
+) -> Vec<crate::contact::EdgeEnd> {
+    contact.edge_ends_in_contact(&[&state.p_plus, &state.p_minus])
+}
+
 impl WearRun {
     /// Whether every step slid the same way (monotonic sliding, or a one-step run).
     pub fn is_monotonic(&self) -> bool {
         let h = &self.history.steps;
         h.windows(2).all(|w| w[0].direction == w[1].direction)
+    }
+
+    /// The edge ends in contact in the last cycle of the run (either half cycle).
+    pub fn edge_ends(&self) -> Vec<crate::contact::EdgeEnd> {
+        self.contact
+            .edge_ends_in_contact(&[&self.history.p_plus, &self.history.p_minus])
     }
 
     /// The summary JSON of the run.
@@ -371,6 +417,7 @@ impl WearRun {
                 "shape": numbers(&h.shape),
             },
             "snapshots": h.snapshots.iter().map(|s| json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "pressure": numbers(&s.pressure), "shape": numbers(&s.shape) })).collect::<Vec<_>>(),
+            "edge_ends_in_contact": edge_ends_json(&self.edge_ends()),
             "solves": h.solves,
             "failed_solves": h.failed_solves,
             "unconverged_steps": h.unconverged_steps,

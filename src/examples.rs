@@ -28,6 +28,11 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         include_str!("../examples/punch-b20-variant2.toml"),
     ),
     ("brake", include_str!("../examples/brake.toml")),
+    (
+        "brake-independent",
+        include_str!("../examples/brake-independent.toml"),
+    ),
+    ("pin", include_str!("../examples/pin.toml")),
 ];
 
 /// The text of built-in example `name`.

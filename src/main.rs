@@ -246,6 +246,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 wearfem::vtk::write_contact_job(&out, &p)?;
             }
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
+            if let Some(w) =
+                driver::edge_ends_warning(&p, &contact.edge_ends_in_contact(&[&solution.pressure]))
+            {
+                eprintln!("{w}");
+            }
             println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
             if info.status == wearfem::complementarity::Status::Failed {
                 return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}); the last iterate was written. A solution may not exist: with a plate that rotates about a pin, friction moves the pressure resultant by μ·l_z, and if that leaves the contact the plate tips", info.complementarity, info.equilibrium)));
@@ -300,6 +305,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 }
                 None => println!("no full cycle completed: no final profiles written"),
             }
+            if let Some(w) = driver::edge_ends_warning(&p, &result.edge_ends()) {
+                eprintln!("{w}");
+            }
             match &h.stopped {
                 Some((step, wearfem::wear::StopReason::SteadyState)) => {
                     println!("adaptive schedule: steady state reached at step {step}");
@@ -343,6 +351,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 probes.join(", "),
                 out.display()
             );
+            if let Some(w) =
+                driver::edge_ends_warning(&p, &driver::steady_edge_ends(&contact, &state))
+            {
+                eprintln!("{w}");
+            }
             if state.status != wearfem::steady::SteadyStatus::Solved {
                 return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); the last iterate was written. If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }

@@ -323,6 +323,7 @@ pub fn write_steady(
         "p_sum": numbers(&p_sum),
         "shape": numbers(&state.shape),
         "rigid_wear_per_period": named(&contact.rigid_names, &state.rigid_wear),
+        "edge_ends_in_contact": crate::driver::edge_ends_json(&crate::driver::steady_edge_ends(contact, state)),
         "seconds": seconds,
     });
     let mut summary = summary;

@@ -138,6 +138,11 @@ fn broken_contact_plate_and_wear_sections() {
     let cases = [
         ("friction = 0.25", "friction = -0.25", "contact.friction"),
         (
+            "discretisation = \"collocation\"",
+            "discretisation = \"segment\"",
+            "contact.discretisation",
+        ),
+        (
             "motion = \"vertical_rotation\"",
             "motion = \"sideways\"",
             "plate.motion",
