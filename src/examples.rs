@@ -39,3 +39,28 @@ pub const EXAMPLES: &[(&str, &str)] = &[
 pub fn example(name: &str) -> Option<&'static str> {
     EXAMPLES.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
 }
+
+/// The text of punch example `name` (any `punch-*` built-in) with `elements` elements under
+/// the punch instead of 8: both punch blocks are cut into `elements` columns and the strip's
+/// mesh lines between x = 1070 and 1130 mm are matched to them. None for other examples.
+/// The studies of mesh refinement (docs/convergence.md, tests/refined.rs) use it.
+pub fn refined_punch(name: &str, elements: usize) -> Option<String> {
+    const STRIP: &str = "u = [0.0, 0.2, 0.35, 0.3875, 0.425, 0.4625, 0.5, 0.5375, 0.575, 0.6125, 0.65, 0.8, 1.0]";
+    const PUNCH_BOTTOM: &str = "u = 8                          # x lines every 7.5 mm";
+    const PUNCH_TOP: &str = "u = 8\nv = 4";
+    let text = example(name)?;
+    if elements == 0 || !(text.contains(STRIP) && text.contains(PUNCH_BOTTOM)) {
+        return None;
+    }
+    let strip: Vec<String> = [0.0, 0.2]
+        .into_iter()
+        .chain((0..=elements).map(|i| 0.35 + 0.3 * i as f64 / elements as f64))
+        .chain([0.8, 1.0])
+        .map(|x| format!("{x:?}"))
+        .collect();
+    Some(
+        text.replace(STRIP, &format!("u = [{}]", strip.join(", ")))
+            .replace(PUNCH_BOTTOM, &format!("u = {elements}"))
+            .replace(PUNCH_TOP, &format!("u = {elements}\nv = 4")),
+    )
+}

@@ -10,29 +10,14 @@ use wearfem::driver;
 use wearfem::problem::Problem;
 use wearfem::wear::{non_rigid_part, StopReason};
 
-/// Example `name` with `n` elements under the punch (both punch blocks; the strip's mesh lines
-/// between x = 1070 and 1130 matched to the punch's) and the edits applied.
+/// Example `name` with `n` elements under the punch (strip lines matched), edits applied.
 fn refined(name: &str, n: usize, edits: &[(&str, &str)]) -> Problem {
-    let strip: Vec<String> = [0.0, 0.2]
-        .into_iter()
-        .chain((0..=n).map(|i| 0.35 + 0.3 * i as f64 / n as f64))
-        .chain([0.8, 1.0])
-        .map(|x| format!("{x:?}"))
-        .collect();
-    let shipped_strip =
-        "u = [0.0, 0.2, 0.35, 0.3875, 0.425, 0.4625, 0.5, 0.5375, 0.575, 0.6125, 0.65, 0.8, 1.0]";
-    let strip_line = format!("u = [{}]", strip.join(", "));
-    let punch_lines = [
-        (
-            "u = 8                          # x lines every 7.5 mm",
-            format!("u = {n}"),
-        ),
-        ("u = 8\nv = 4", format!("u = {n}\nv = 4")),
-    ];
-    let mut all: Vec<(&str, &str)> = vec![(shipped_strip, strip_line.as_str())];
-    all.extend(punch_lines.iter().map(|(a, b)| (*a, b.as_str())));
-    all.extend_from_slice(edits);
-    problem(name, &all)
+    let mut text = wearfem::examples::refined_punch(name, n).expect("a punch example");
+    for (from, to) in edits {
+        assert!(text.contains(from), "{name}: '{from}' not in the file");
+        text = text.replace(from, to);
+    }
+    Problem::from_toml(&text, name).expect("valid problem")
 }
 
 /// Compare the 1700-step run with the steady state on the same problem, with the issue's
