@@ -24,6 +24,7 @@
 //! | sliding kinematics, extrapolation | [`kinematics`] | [`kinematics::ScheduleEntry`] |
 //! | wear integration | [`wear`] | [`wear::WearIntegrator`] |
 //! | steady worn state, directly | [`steady`] | [`steady::steady_state`] |
+//! | the paper's §6: monotonic and averaged shapes | [`monotonic_shape`] | [`monotonic_shape::averaged_shape`] |
 //! | jobs (elastic, contact, run, steady) | [`driver`] | [`driver::WearRun`] |
 //! | output files and plots | [`output`], [`plot`] | [`output::write_wear`] |
 //!
@@ -46,6 +47,7 @@ pub mod lemke;
 pub mod loads;
 pub mod material;
 pub mod mesh;
+pub mod monotonic_shape;
 pub mod output;
 pub mod plot;
 pub mod problem;
