@@ -327,3 +327,45 @@ pub fn steady(
     })?;
     Ok((state, contact, start.elapsed().as_secs_f64()))
 }
+
+/// The periodic steady state of `problem` by one of the paper's §6 methods or the exact one
+/// ([`crate::paper_steady`]), with the condensed contact problem and the set-up time (s).
+pub fn steady_by(
+    problem: &Problem,
+    method: crate::paper_steady::SteadyMethod,
+    settings: crate::paper_steady::MethodSettings,
+) -> Result<(crate::paper_steady::MethodOutcome, CondensedContact, f64), JobError> {
+    let spec = problem
+        .spec
+        .wear
+        .clone()
+        .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
+    let integrator =
+        WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
+    if integrator.is_monotonic() {
+        return Err(problem
+            .error(
+                "wear.sliding",
+                "the paper's §6 methods are for reciprocating sliding; use --method exact",
+            )
+            .into());
+    }
+    let start = Instant::now();
+    let (contact, _, _) = CondensedContact::build(problem)?;
+    let setup = start.elapsed().as_secs_f64();
+    let outcome = crate::paper_steady::solve_steady(
+        &contact,
+        &integrator.half_period_wear(),
+        method,
+        settings,
+    )
+    .map_err(|e| {
+        let key = match e {
+            crate::paper_steady::MethodError::Steady(crate::steady::SteadyError::NoWear)
+            | crate::paper_steady::MethodError::Unsupported(_) => "wear.body1",
+            _ => "plate.motion",
+        };
+        problem.error(key, e.to_string())
+    })?;
+    Ok((outcome, contact, setup))
+}

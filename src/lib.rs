@@ -25,6 +25,7 @@
 //! | wear integration | [`wear`] | [`wear::WearIntegrator`] |
 //! | steady worn state, directly | [`steady`] | [`steady::steady_state`] |
 //! | the paper's §6: monotonic and averaged shapes | [`monotonic_shape`] | [`monotonic_shape::averaged_shape`] |
+//! | the paper's §6: spline and penalty methods | [`paper_steady`], [`spline_method`] | [`paper_steady::solve_steady`] |
 //! | jobs (elastic, contact, run, steady) | [`driver`] | [`driver::WearRun`] |
 //! | output files and plots | [`output`], [`plot`] | [`output::write_wear`] |
 //!
@@ -49,9 +50,11 @@ pub mod material;
 pub mod mesh;
 pub mod monotonic_shape;
 pub mod output;
+pub mod paper_steady;
 pub mod plot;
 pub mod problem;
 pub mod quadrature;
 pub mod schema;
+pub mod spline_method;
 pub mod steady;
 pub mod wear;

@@ -1,0 +1,80 @@
+//! The paper's §6 methods (averaged shape, spline, penalty) against the exact steady state of
+//! src/steady.rs on Example 1 (`punch-a`) and Example 2 of §6.3 (`punch-b40`).
+
+mod common;
+use common::problem;
+use wearfem::contact::CondensedContact;
+use wearfem::paper_steady::{
+    solve_steady, MethodOutcome, MethodSettings, Sensitivities, SteadyMethod,
+};
+use wearfem::steady::SteadyStatus;
+use wearfem::wear::WearIntegrator;
+
+fn solve(name: &str, method: SteadyMethod, settings: MethodSettings) -> MethodOutcome {
+    let p = problem(name, &[]);
+    let (contact, _, _) = CondensedContact::build(&p).unwrap();
+    let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
+        .unwrap()
+        .half_period_wear();
+    solve_steady(&contact, &terms, method, settings).unwrap()
+}
+
+/// Largest differences to the exact state: pressures over the peak pressure, shape over its
+/// range (both shapes in the same gauge, Σ w R g = 0).
+fn difference(a: &MethodOutcome, exact: &MethodOutcome) -> (f64, f64) {
+    let e = &exact.state;
+    let peak = e.p_plus.iter().chain(&e.p_minus).cloned().fold(0.0, f64::max);
+    let dp = (0..e.p_plus.len())
+        .map(|i| {
+            (a.state.p_plus[i] - e.p_plus[i])
+                .abs()
+                .max((a.state.p_minus[i] - e.p_minus[i]).abs())
+        })
+        .fold(0.0, f64::max);
+    let (lo, hi) = e
+        .shape
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| (l.min(v), h.max(v)));
+    let ds = a
+        .state
+        .shape
+        .iter()
+        .zip(&e.shape)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
+    (dp / peak, ds / (hi - lo))
+}
+
+#[test]
+fn exact_method_has_delta_w_at_round_off() {
+    // Eq. 40 vanishes in the steady state; the exact solve reaches it to round-off: below
+    // 1e-12 of the wear of a period, β̃ 2u₀ · 2p̃ (the bound).
+    let wear_per_period = 3.9269908169872414e-8 * 3.0 * 33.332;
+    for name in ["punch-a", "punch-b40"] {
+        let e = solve(name, SteadyMethod::Exact, MethodSettings::default());
+        assert_eq!(e.state.status, SteadyStatus::Solved);
+        let max = e.delta_w.iter().cloned().fold(0.0, f64::max);
+        assert!(max < 1e-12 * wear_per_period, "{name}: max δw = {max:e}");
+        assert!(e.residual < 1e-12, "{name}: eq. 49 residual {:e}", e.residual);
+    }
+}
+
+#[test]
+fn penalty_iteration_converges_to_the_exact_state() {
+    // The criterion: p⁺, p⁻ within 2 % of the peak pressure, shape within 2 % of its
+    // range. The penalty iteration stops at an eq. 49 residual of 1e-3, which leaves it two
+    // orders inside that.
+    for name in ["punch-a", "punch-b40"] {
+        let exact = solve(name, SteadyMethod::Exact, MethodSettings::default());
+        let pen = solve(name, SteadyMethod::Penalty, MethodSettings::default());
+        assert_eq!(pen.state.status, SteadyStatus::Solved, "{name}");
+        let (dp, ds) = difference(&pen, &exact);
+        assert!(dp < 0.02 && ds < 0.02, "{name}: Δp {dp:.4}, Δshape {ds:.4}");
+        // The start, the averaged shape, is far from it (the corner peaks of Fig. 24b).
+        let avg = solve(name, SteadyMethod::Averaged, MethodSettings::default());
+        let (dp0, _) = difference(&avg, &exact);
+        assert!(dp0 > 0.5, "{name}: averaged start already at {dp0}");
+        // Fewer iterations than periods of the time integration, more than the exact Newton.
+        assert!(pen.state.iterations > exact.state.iterations);
+    }
+}
