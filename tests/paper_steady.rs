@@ -23,7 +23,12 @@ fn solve(name: &str, method: SteadyMethod, settings: MethodSettings) -> MethodOu
 /// range (both shapes in the same gauge, Σ w R g = 0).
 fn difference(a: &MethodOutcome, exact: &MethodOutcome) -> (f64, f64) {
     let e = &exact.state;
-    let peak = e.p_plus.iter().chain(&e.p_minus).cloned().fold(0.0, f64::max);
+    let peak = e
+        .p_plus
+        .iter()
+        .chain(&e.p_minus)
+        .cloned()
+        .fold(0.0, f64::max);
     let dp = (0..e.p_plus.len())
         .map(|i| {
             (a.state.p_plus[i] - e.p_plus[i])
@@ -34,7 +39,9 @@ fn difference(a: &MethodOutcome, exact: &MethodOutcome) -> (f64, f64) {
     let (lo, hi) = e
         .shape
         .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| (l.min(v), h.max(v)));
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| {
+            (l.min(v), h.max(v))
+        });
     let ds = a
         .state
         .shape
@@ -55,7 +62,11 @@ fn exact_method_has_delta_w_at_round_off() {
         assert_eq!(e.state.status, SteadyStatus::Solved);
         let max = e.delta_w.iter().cloned().fold(0.0, f64::max);
         assert!(max < 1e-12 * wear_per_period, "{name}: max δw = {max:e}");
-        assert!(e.residual < 1e-12, "{name}: eq. 49 residual {:e}", e.residual);
+        assert!(
+            e.residual < 1e-12,
+            "{name}: eq. 49 residual {:e}",
+            e.residual
+        );
     }
 }
 
@@ -76,5 +87,37 @@ fn penalty_iteration_converges_to_the_exact_state() {
         assert!(dp0 > 0.5, "{name}: averaged start already at {dp0}");
         // Fewer iterations than periods of the time integration, more than the exact Newton.
         assert!(pen.state.iterations > exact.state.iterations);
+    }
+}
+
+#[test]
+fn spline_method_reaches_the_exact_shape_and_both_sensitivities_agree() {
+    for name in ["punch-a", "punch-b40"] {
+        let exact = solve(name, SteadyMethod::Exact, MethodSettings::default());
+        let fd = solve(name, SteadyMethod::Spline, MethodSettings::default());
+        let ex = solve(
+            name,
+            SteadyMethod::Spline,
+            MethodSettings {
+                sensitivities: Sensitivities::Exact,
+                ..Default::default()
+            },
+        );
+        // The 2 % of the shape's range is met (measured 1.1 % and 0.8 %).
+        let (dp, ds) = difference(&ex, &exact);
+        assert!(ds < 0.02, "{name}: Δshape {ds:.4}");
+        // The pressures are not: 17 spline points cannot follow the steady shape at the
+        // corners, where p⁺ + p⁻ keeps an error of 8–9 % of the peak (measured 8.3 %, 9.1 %;
+        // 4 % three points in). This bound records that limit, it does not excuse it.
+        assert!(dp < 0.10, "{name}: Δp {dp:.4}");
+        // Finite differences (Δs = 0.00002 mm) and exact sensitivities end at the same
+        // stationary point: the difference is the forward-difference error, O(Δs/range) ~ 1 %
+        // of a step that is itself small at the end; 1e-3 of the peak and range.
+        let (dp2, ds2) = difference(&fd, &ex);
+        assert!(
+            dp2 < 1e-3 && ds2 < 1e-3,
+            "{name}: fd vs exact Δp {dp2:e}, Δshape {ds2:e}"
+        );
+        assert!(ex.contact_solves < fd.contact_solves, "{name}");
     }
 }
