@@ -265,6 +265,17 @@ impl<'a> Problem<'a> {
         d.iter().map(|v| v - min).collect()
     }
 
+    /// max |Δw + R c| / max Δw with c the best rigid fit: the wear compatibility residual in
+    /// the sense of [`SteadyState::wear_residual`].
+    pub fn wear_residual(&self, h: &Halves) -> f64 {
+        let w = self.period_wear(h);
+        let scale = w.iter().cloned().fold(0.0, f64::max);
+        self.without_rigid(&w)
+            .iter()
+            .fold(0.0, |m: f64, v| m.max(v.abs()))
+            / scale
+    }
+
     /// max |p⁺ + p⁻ − p_Σ| / max p_Σ (eq. 49).
     pub fn residual(&self, h: &Halves) -> f64 {
         let scale = self.p_sigma.iter().cloned().fold(0.0, f64::max);
@@ -307,7 +318,7 @@ impl<'a> Problem<'a> {
                 SteadyStatus::MaxIterations
             },
             iterations: history.last().map_or(0, |r| r.iteration),
-            wear_residual: self.residual(&h),
+            wear_residual: self.wear_residual(&h),
             p_plus: h.p_plus.clone(),
             p_minus: h.p_minus.clone(),
             rigid_plus: h.rigid_plus.clone(),
