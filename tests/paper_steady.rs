@@ -121,3 +121,69 @@ fn spline_method_reaches_the_exact_shape_and_both_sensitivities_agree() {
         assert!(ex.contact_solves < fd.contact_solves, "{name}");
     }
 }
+
+/// `wearfem steady punch-a` with `args`; returns the exit code and the output directory.
+fn cli(args: &[&str], tag: &str) -> (i32, std::path::PathBuf) {
+    let dir =
+        std::env::temp_dir().join(format!("wearfem-paper-steady-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .args(["steady", "punch-a", "--out", dir.to_str().unwrap()])
+        .args(args)
+        .output()
+        .unwrap();
+    (out.status.code().unwrap_or(-1), dir)
+}
+
+#[test]
+fn every_method_writes_the_same_keys_and_bad_options_are_refused() {
+    let keys = |dir: &std::path::Path| -> Vec<String> {
+        let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let mut k: Vec<String> = v.as_object().unwrap().keys().cloned().collect();
+        k.retain(|k| k != "penalty_stiffness");
+        k.sort();
+        k
+    };
+    let mut first: Option<Vec<String>> = None;
+    for method in ["exact", "averaged", "spline", "penalty"] {
+        let (code, dir) = cli(&["--method", method], method);
+        assert_eq!(code, 0, "{method}");
+        assert!(dir.join("iterations.csv").exists() && dir.join("steady.csv").exists());
+        let k = keys(&dir);
+        for key in [
+            "method",
+            "history",
+            "residual_eq49",
+            "delta_w",
+            "max_delta_w",
+            "seconds",
+        ] {
+            assert!(k.iter().any(|x| x == key), "{method}: no {key}");
+        }
+        match &first {
+            None => first = Some(k),
+            Some(f) => assert_eq!(f, &k, "{method}"),
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+    // Bad options: exit 2. A penalty far below the contact stiffness overshoots and diverges:
+    // exit 1 and nothing written.
+    for (args, tag) in [
+        (&["--method", "newton"][..], "bad-method"),
+        (
+            &["--method", "averaged", "--reading", "half"][..],
+            "bad-reading",
+        ),
+        (
+            &["--method", "spline", "--sensitivities", "adjoint"][..],
+            "bad-sens",
+        ),
+        (&["--method", "penalty", "--tolerance", "2"][..], "bad-tol"),
+    ] {
+        assert_eq!(cli(args, tag).0, 2, "{args:?}");
+    }
+    let (code, dir) = cli(&["--method", "penalty", "--penalty", "1000"], "diverges");
+    assert_eq!(code, 1);
+    assert!(!dir.join("summary.json").exists());
+}
