@@ -1,10 +1,11 @@
-//! Our versions of the paper's figures (Fig. 4–9, 11–18, 20, 23–25) as SVG:
+//! Our versions of the paper's figures (Fig. 4–9, 11–25) as SVG:
 //! `cargo run --release --example figures -- OUTDIR`. docs/figures.md shows them with the
 //! paper's. The plotting is here, apart from src/plot.rs, so that a PNG backend can be switched
 //! on for these figures alone later.
 
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
+use wearfem::complementarity::{ContactSolver, Direction, Method};
 use wearfem::contact::CondensedContact;
 use wearfem::monotonic_shape::{averaged_shape, AveragedReading};
 use wearfem::paper_steady::{solve_steady, MethodOutcome, MethodSettings, SteadyMethod};
@@ -186,6 +187,76 @@ fn main() {
         um,
         &curves,
     );
+    // Fig. 19, 21, 22: the spline method's iterates, their shapes and pressures.
+    let spline = run(&a, SteadyMethod::Spline, 20);
+    let mut solver = ContactSolver::new(&a.contact, Method::ActiveSet);
+    let mut pressure = |shape: &[f64], d: Direction| -> Vec<f64> {
+        let gap: Vec<f64> = a
+            .contact
+            .points
+            .initial_gap
+            .iter()
+            .zip(shape)
+            .map(|(g, s)| g + s)
+            .collect();
+        solver.solve(&gap, d).0.pressure
+    };
+    let label = |k: usize| -> String {
+        if k <= 7 {
+            format!("m = {k}")
+        } else {
+            format!("m_s = {}", k - 8)
+        }
+    };
+    let poly: Vec<&(usize, Vec<f64>)> = spline.iterates.iter().filter(|(k, _)| *k <= 7).collect();
+    let newton: Vec<&(usize, Vec<f64>)> = spline
+        .iterates
+        .iter()
+        .filter(|(k, _)| *k >= 8 && *k <= 11)
+        .collect();
+    let mut curves: Vec<Curve> = poly
+        .iter()
+        .map(|(k, g)| curve(&label(*k), &a.x, &zeroed(&a.x, g, 1100.0), 1e3))
+        .collect();
+    let mut e = curve("exact steady state", &a.x, &steady, 1e3);
+    e.dashed = true;
+    curves.push(e);
+    plot(
+        &out.join("fig19.svg"),
+        "Fig. 19: polynomial iteration (eq. 44, q = 9, Δ = 0.0004 mm), punch-a",
+        "x (mm)",
+        um,
+        &curves,
+    );
+    for (fig, set, what) in [
+        ("fig21", &poly, "polynomial iteration"),
+        ("fig22", &newton, "spline modifications"),
+    ] {
+        for (d, sub, dir) in [
+            (Direction::Plus, "a", "rightward (+)"),
+            (Direction::Minus, "b", "leftward (−)"),
+        ] {
+            let mut curves: Vec<Curve> = set
+                .iter()
+                .map(|(k, g)| curve(&label(*k), &a.x, &pressure(g, d), 1.0))
+                .collect();
+            let steady_p = if d == Direction::Plus {
+                &exact.state.p_plus
+            } else {
+                &exact.state.p_minus
+            };
+            let mut e = curve("exact steady state", &a.x, steady_p, 1.0);
+            e.dashed = true;
+            curves.push(e);
+            plot(
+                &out.join(format!("{fig}{sub}.svg")),
+                &format!("{fig}{sub}: pressure during the {what}, {dir} sliding (punch-a)"),
+                "x (mm)",
+                "p (MPa)",
+                &curves,
+            );
+        }
+    }
     // Fig. 23: steady pressures.
     plot(
         &out.join("fig23.svg"),

@@ -126,6 +126,10 @@ pub struct MethodOutcome {
     pub penalty_stiffness: Option<f64>,
     /// Wall time of the method (the FE set-up excluded), s.
     pub seconds: f64,
+    /// Spline method only: (iteration, shape at the contact points, mm) for the spline through
+    /// the averaged shape (0), the polynomial steps m = 1 … 7 and each Newton step (the
+    /// iteration numbers of `history`), for Fig. 19–22.
+    pub iterates: Vec<(usize, Vec<f64>)>,
 }
 
 /// Why a paper method cannot run.
@@ -333,6 +337,7 @@ impl<'a> Problem<'a> {
             contact_solves: self.solves,
             penalty_stiffness: None,
             seconds: start.elapsed().as_secs_f64(),
+            iterates: Vec::new(),
         })
     }
 }
@@ -371,6 +376,7 @@ pub fn solve_steady(
             contact_solves: 0,
             penalty_stiffness: None,
             seconds: start.elapsed().as_secs_f64(),
+            iterates: Vec::new(),
         });
     }
     let mut problem = Problem::new(contact, terms)?;
@@ -392,9 +398,10 @@ pub fn solve_steady(
             Ok(out)
         }
         SteadyMethod::Spline => {
-            let (shape, history, converged) =
-                crate::spline_method::spline(&mut problem, &averaged, settings)?;
-            problem.outcome(method, &shape, history, converged, start)
+            let run = crate::spline_method::spline(&mut problem, &averaged, settings)?;
+            let mut out = problem.outcome(method, &run.shape, run.history, run.converged, start)?;
+            out.iterates = run.iterates;
+            Ok(out)
         }
     }
 }

@@ -81,6 +81,15 @@ pub fn interpolate(xs: &[f64], v: &[f64], x: f64) -> f64 {
         .sum()
 }
 
+/// What [`spline`] returns: the final shape at the contact points, the history, whether it
+/// ended (see [`spline`]) and the shape after every polynomial and Newton step.
+pub(crate) struct SplineRun {
+    pub shape: Vec<f64>,
+    pub history: Vec<IterationRecord>,
+    pub converged: bool,
+    pub iterates: Vec<(usize, Vec<f64>)>,
+}
+
 /// The spline's geometry on one contact: knot x, the basis (contact point i, free ordinate j)
 /// and the zone of each contact point.
 struct Spline {
@@ -160,7 +169,7 @@ pub(crate) fn spline(
     problem: &mut Problem,
     averaged: &[f64],
     settings: MethodSettings,
-) -> Result<(Vec<f64>, Vec<IterationRecord>, bool), MethodError> {
+) -> Result<SplineRun, MethodError> {
     let xs: Vec<f64> = problem.contact.points.x.iter().map(|p| p[0]).collect();
     let sp = Spline::new(&xs);
     let free: Vec<usize> = (0..KNOTS.len()).filter(|&k| k != MID_KNOT).collect();
@@ -171,6 +180,7 @@ pub(crate) fn spline(
     let (mid, half) = (sp.knots[MID_KNOT], 0.5 * (sp.knots[16] - sp.knots[0]));
     // Polynomial iteration (eq. 44): keep the m with the smallest I_δw · max δw.
     let mut history = Vec::new();
+    let mut iterates = vec![(0, sp.shape(&start))];
     let mut best = (f64::INFINITY, start.clone());
     for m in 1..=POLY_STEPS {
         let a: Vec<f64> = free
@@ -182,6 +192,7 @@ pub(crate) fn spline(
             .collect();
         let (_, record) = zone_residual(problem, &sp, &a, m)?;
         history.push(record);
+        iterates.push((m, sp.shape(&a)));
         let objective = record.i_delta_w * record.max_delta_w;
         if objective < best.0 {
             best = (objective, a);
@@ -225,10 +236,16 @@ pub(crate) fn spline(
             break;
         }
         history.push(record);
+        iterates.push((record.iteration, sp.shape(&a)));
         converged = record.residual <= settings.tolerance;
         step += 1;
     }
-    Ok((sp.shape(&a), history, converged))
+    Ok(SplineRun {
+        shape: sp.shape(&a),
+        history,
+        converged,
+        iterates,
+    })
 }
 
 /// ∂(zone δw)/∂a_j by forward differences (eq. 46): 16 × 16, row-major.
