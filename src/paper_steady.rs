@@ -66,8 +66,9 @@ pub struct MethodSettings {
     /// (default: the mean, what the paper's printed ordinates are).
     pub reading: AveragedReading,
     /// Penalty parameter c_n of eq. 50–66, MPa/mm (default `None`: the largest eigenvalue of
-    /// the contact stiffness diag(1/area) A_nn⁻¹, the smallest c_n for which the iteration
-    /// cannot overshoot on the stiffest mode).
+    /// the contact stiffness diag(1/area) A_nn⁻¹: with it one correction Δp/c_n cannot
+    /// overshoot on the stiffest gap pattern of a linearised half cycle; smaller values
+    /// diverge, larger ones converge proportionally slower).
     pub penalty_stiffness: Option<f64>,
     /// Most iterations: penalty periods (default 5000) or spline Newton steps (× 1/250).
     pub max_iterations: usize,
