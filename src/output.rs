@@ -367,7 +367,8 @@ pub fn write_contact(
 
 /// Write a steady state found by [`crate::paper_steady::solve_steady`]: the keys and files of
 /// [`write_steady`] plus the method, its history of I_δw, max δw and the eq. 49 residual
-/// (also as iterations.csv), δw, the contact solves and the times.
+/// (also as iterations.csv), δw, the contact solves and the times (`seconds` with the set-up,
+/// `setup_seconds`, `method_seconds` without it).
 pub fn write_steady_method(
     dir: &Path,
     problem: &crate::problem::Problem,
@@ -375,7 +376,14 @@ pub fn write_steady_method(
     outcome: &crate::paper_steady::MethodOutcome,
     setup_seconds: f64,
 ) -> Result<(), OutputError> {
-    write_steady(dir, problem, contact, &outcome.state, outcome.seconds)?;
+    // `seconds` keeps its meaning of `wearfem steady` before the methods: set-up included.
+    write_steady(
+        dir,
+        problem,
+        contact,
+        &outcome.state,
+        setup_seconds + outcome.seconds,
+    )?;
     let path = dir.join("summary.json");
     let text = fs::read_to_string(&path).map_err(io(&path))?;
     let mut summary: Value = serde_json::from_str(&text).map_err(|e| OutputError {
@@ -397,6 +405,7 @@ pub fn write_steady_method(
         summary["penalty_stiffness"] = number(c_n);
     }
     summary["setup_seconds"] = json!(setup_seconds);
+    summary["method_seconds"] = json!(outcome.seconds);
     write_json(dir, "summary.json", &summary)?;
     let rows: Vec<Vec<Value>> = outcome
         .history
