@@ -18,6 +18,9 @@ pub enum JobError {
     /// The problem file is wrong.
     #[error(transparent)]
     Problem(#[from] ProblemError),
+    /// The input is fine but the computation failed (a contact solve inside a §6 method).
+    #[error("{0}")]
+    Compute(String),
 }
 
 /// Static elastic solve of every body: dofs, strain energy and probe values.
@@ -360,12 +363,16 @@ pub fn steady_by(
         settings,
     )
     .map_err(|e| {
+        use crate::paper_steady::MethodError;
         let key = match e {
-            crate::paper_steady::MethodError::Steady(crate::steady::SteadyError::NoWear)
-            | crate::paper_steady::MethodError::Unsupported(_) => "wear.body1",
-            _ => "plate.motion",
+            MethodError::ContactFailed(_) => {
+                return JobError::Compute(format!("{}: {e}; nothing was written", problem.file))
+            }
+            MethodError::Steady(crate::steady::SteadyError::NoWear)
+            | MethodError::Unsupported(_) => "wear.body1",
+            MethodError::Steady(crate::steady::SteadyError::NoRigidMotion) => "plate.motion",
         };
-        problem.error(key, e.to_string())
+        JobError::Problem(problem.error(key, e.to_string()))
     })?;
     Ok((outcome, contact, setup))
 }

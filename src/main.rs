@@ -93,7 +93,10 @@ enum Failure {
 
 impl From<JobError> for Failure {
     fn from(e: JobError) -> Self {
-        Failure::Input(e.to_string())
+        match e {
+            JobError::Problem(_) => Failure::Input(e.to_string()),
+            JobError::Compute(m) => Failure::Compute(m),
+        }
     }
 }
 

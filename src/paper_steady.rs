@@ -144,8 +144,8 @@ pub enum MethodError {
         "the paper's §6 methods need reciprocating sliding and b = 1 (got {0}); use --method exact"
     )]
     Unsupported(String),
-    /// A contact solve inside the method failed.
-    #[error("a contact solve inside the {0} method did not converge")]
+    /// A contact solve inside the method failed (at the shape of that iterate).
+    #[error("a contact solve inside the {0} did not converge")]
     ContactFailed(&'static str),
 }
 
@@ -158,7 +158,7 @@ pub(crate) struct Halves {
 }
 
 /// Shared data of the methods: the contact, its solver, wear terms and the target p_Σ.
-pub(crate) struct Problem<'a> {
+pub(crate) struct Evaluator<'a> {
     pub contact: &'a CondensedContact,
     pub solver: ContactSolver,
     pub terms: Vec<(f64, f64)>,
@@ -168,13 +168,13 @@ pub(crate) struct Problem<'a> {
     pub solves: usize,
 }
 
-impl<'a> Problem<'a> {
+impl<'a> Evaluator<'a> {
     fn new(contact: &'a CondensedContact, terms: &[(f64, f64)]) -> Result<Self, MethodError> {
         if terms.iter().any(|t| t.1 != 1.0) {
             return Err(MethodError::Unsupported("b ≠ 1".into()));
         }
         let p_sigma = summed_pressure_theory(contact).ok_or(SteadyError::NoRigidMotion)?;
-        Ok(Problem {
+        Ok(Evaluator {
             contact,
             solver: ContactSolver::new(contact, Method::ActiveSet),
             terms: terms.to_vec(),
@@ -202,7 +202,7 @@ impl<'a> Problem<'a> {
         self.solves += 1;
         let (sol, info) = self.solver.solve(&gap, direction);
         if info.status != Status::Solved {
-            return Err(MethodError::ContactFailed("paper"));
+            return Err(MethodError::ContactFailed("§6 method"));
         }
         Ok((sol.pressure, sol.rigid))
     }
@@ -359,7 +359,7 @@ pub fn solve_steady(
             SteadySliding::Reciprocating,
             Default::default(),
         )?;
-        let mut problem = Problem::new(contact, terms)?;
+        let mut problem = Evaluator::new(contact, terms)?;
         let h = Halves {
             p_plus: state.p_plus.clone(),
             p_minus: state.p_minus.clone(),
@@ -380,7 +380,7 @@ pub fn solve_steady(
             iterates: Vec::new(),
         });
     }
-    let mut problem = Problem::new(contact, terms)?;
+    let mut problem = Evaluator::new(contact, terms)?;
     let averaged = averaged_shape(contact, terms, settings.reading)?.shape;
     match method {
         SteadyMethod::Exact => unreachable!("handled above"),
@@ -429,7 +429,7 @@ pub fn contact_stiffness(contact: &CondensedContact) -> f64 {
 /// '+' contact zone (eq. 57); the '−' half cycle does the same where p⁻ > 0, zeroed at x_cl
 /// (eq. 59–62); then the shape is set to zero at mid contact.
 fn penalty(
-    problem: &mut Problem,
+    problem: &mut Evaluator,
     mut shape: Vec<f64>,
     c_n: f64,
     settings: MethodSettings,

@@ -8,7 +8,7 @@
 //! all 16 columns.
 
 use crate::complementarity::Direction;
-use crate::paper_steady::{IterationRecord, MethodError, MethodSettings, Problem, Sensitivities};
+use crate::paper_steady::{Evaluator, IterationRecord, MethodError, MethodSettings, Sensitivities};
 use faer::linalg::solvers::Solve;
 use faer::Mat;
 
@@ -148,7 +148,7 @@ impl Spline {
 /// δw of eq. 40 before its minimum is taken off (the period's wear less its rigid part) at
 /// the 16 zones, and the record, at ordinates `a`.
 fn zone_residual(
-    problem: &mut Problem,
+    problem: &mut Evaluator,
     spline: &Spline,
     a: &[f64],
     iteration: usize,
@@ -166,7 +166,7 @@ fn zone_residual(
 /// ended: the eq. 49 residual at the tolerance, or a stationary point of the least squares
 /// (the best shape the spline can represent).
 pub(crate) fn spline(
-    problem: &mut Problem,
+    problem: &mut Evaluator,
     averaged: &[f64],
     settings: MethodSettings,
 ) -> Result<SplineRun, MethodError> {
@@ -250,7 +250,7 @@ pub(crate) fn spline(
 
 /// ∂(zone δw)/∂a_j by forward differences (eq. 46): 16 × 16, row-major.
 fn fd_jacobian(
-    problem: &mut Problem,
+    problem: &mut Evaluator,
     sp: &Spline,
     a: &[f64],
     r: &[f64],
@@ -272,7 +272,7 @@ fn fd_jacobian(
 /// active points and the plate motion solve [A_aa R_a; E_a 0] [P; λ] = [−g_a; −L], so
 /// ∂P/∂a = −(first block of the inverse) · basis_a.
 fn exact_jacobian(
-    problem: &mut Problem,
+    problem: &mut Evaluator,
     sp: &Spline,
     a: &[f64],
 ) -> Result<Vec<Vec<f64>>, MethodError> {
