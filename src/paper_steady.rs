@@ -160,7 +160,8 @@ pub(crate) struct Halves {
 /// Shared data of the methods: the contact, its solver, wear terms and the target p_Σ.
 pub(crate) struct Evaluator<'a> {
     pub contact: &'a CondensedContact,
-    pub solver: ContactSolver,
+    /// Built on the first contact solve (the exact method needs none).
+    pub solver: Option<ContactSolver>,
     pub terms: Vec<(f64, f64)>,
     pub p_sigma: Vec<f64>,
     pub area: Vec<f64>,
@@ -176,7 +177,7 @@ impl<'a> Evaluator<'a> {
         let p_sigma = summed_pressure_theory(contact).ok_or(SteadyError::NoRigidMotion)?;
         Ok(Evaluator {
             contact,
-            solver: ContactSolver::new(contact, Method::ActiveSet),
+            solver: None,
             terms: terms.to_vec(),
             p_sigma,
             area: contact.areas(),
@@ -200,7 +201,11 @@ impl<'a> Evaluator<'a> {
             .map(|(a, b)| a + b)
             .collect();
         self.solves += 1;
-        let (sol, info) = self.solver.solve(&gap, direction);
+        let contact = self.contact;
+        let solver = self
+            .solver
+            .get_or_insert_with(|| ContactSolver::new(contact, Method::ActiveSet));
+        let (sol, info) = solver.solve(&gap, direction);
         if info.status != Status::Solved {
             return Err(MethodError::ContactFailed("§6 method"));
         }
