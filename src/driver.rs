@@ -18,6 +18,9 @@ pub enum JobError {
     /// The problem file is wrong.
     #[error(transparent)]
     Problem(#[from] ProblemError),
+    /// The input is fine but the computation failed (a contact solve inside a §6 method).
+    #[error("{0}")]
+    Compute(String),
 }
 
 /// Static elastic solve of every body: dofs, strain energy and probe values.
@@ -496,4 +499,50 @@ pub fn steady(
         problem.error(key, e.to_string())
     })?;
     Ok((state, contact, start.elapsed().as_secs_f64()))
+}
+
+/// The periodic steady state of `problem` by one of the paper's §6 methods or the exact one
+/// ([`crate::paper_steady`]), with the condensed contact problem and the set-up time (s).
+pub fn steady_by(
+    problem: &Problem,
+    method: crate::paper_steady::SteadyMethod,
+    settings: crate::paper_steady::MethodSettings,
+) -> Result<(crate::paper_steady::MethodOutcome, CondensedContact, f64), JobError> {
+    let spec = problem
+        .spec
+        .wear
+        .clone()
+        .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
+    let integrator =
+        WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
+    if integrator.is_monotonic() {
+        return Err(problem
+            .error(
+                "wear.sliding",
+                "the paper's §6 methods are for reciprocating sliding; use --method exact",
+            )
+            .into());
+    }
+    let start = Instant::now();
+    let (contact, _, _) = CondensedContact::build(problem)?;
+    let setup = start.elapsed().as_secs_f64();
+    let outcome = crate::paper_steady::solve_steady(
+        &contact,
+        &integrator.half_period_wear(),
+        method,
+        settings,
+    )
+    .map_err(|e| {
+        use crate::paper_steady::MethodError;
+        let key = match e {
+            MethodError::ContactFailed(_) => {
+                return JobError::Compute(format!("{}: {e}; nothing was written", problem.file))
+            }
+            MethodError::Steady(crate::steady::SteadyError::NoWear)
+            | MethodError::Unsupported(_) => "wear.body1",
+            MethodError::Steady(crate::steady::SteadyError::NoRigidMotion) => "plate.motion",
+        };
+        JobError::Problem(problem.error(key, e.to_string()))
+    })?;
+    Ok((outcome, contact, setup))
 }

@@ -45,7 +45,8 @@ pub fn example(name: &str) -> Option<&'static str> {
 /// mesh lines between x = 1070 and 1130 mm are matched to them. None for other examples.
 /// The studies of mesh refinement (docs/convergence.md, tests/refined.rs) use it.
 pub fn refined_punch(name: &str, elements: usize) -> Option<String> {
-    const STRIP: &str = "u = [0.0, 0.2, 0.35, 0.3875, 0.425, 0.4625, 0.5, 0.5375, 0.575, 0.6125, 0.65, 0.8, 1.0]";
+    const STRIP: &str =
+        "u = [0.0, 0.2, 0.35, 0.3875, 0.425, 0.4625, 0.5, 0.5375, 0.575, 0.6125, 0.65, 0.8, 1.0]";
     const PUNCH_BOTTOM: &str = "u = 8                          # x lines every 7.5 mm";
     const PUNCH_TOP: &str = "u = 8\nv = 4";
     let text = example(name)?;

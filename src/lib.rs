@@ -26,6 +26,8 @@
 //! | wear integration | [`wear`] | [`wear::WearIntegrator`] |
 //! | wear input in engineering units | [`wear_units`] | [`wear_units::WearLawInput`] |
 //! | steady worn state, directly | [`steady`] | [`steady::steady_state`] |
+//! | the paper's §6: monotonic and averaged shapes | [`monotonic_shape`] | [`monotonic_shape::averaged_shape`] |
+//! | the paper's §6: spline and penalty methods | [`paper_steady`], [`spline_method`] | [`paper_steady::solve_steady`] |
 //! | jobs (elastic, contact, run, steady) | [`driver`] | [`driver::WearRun`] |
 //! | deformed bodies behind a contact solve | [`deformation`] | [`deformation::contact_fields`] |
 //! | parameter studies | [`sweep`] | [`sweep::Sweep`] |
@@ -53,12 +55,15 @@ pub mod lemke;
 pub mod loads;
 pub mod material;
 pub mod mesh;
+pub mod monotonic_shape;
 pub mod output;
 pub mod overrides;
+pub mod paper_steady;
 pub mod plot;
 pub mod problem;
 pub mod quadrature;
 pub mod schema;
+pub mod spline_method;
 pub mod steady;
 pub mod sweep;
 pub mod validate;

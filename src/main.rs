@@ -6,8 +6,10 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use wearfem::driver::{self, JobError};
 use wearfem::examples::EXAMPLES;
+use wearfem::monotonic_shape::AveragedReading;
 use wearfem::output::write_json;
 use wearfem::overrides::Override;
+use wearfem::paper_steady::{MethodSettings, Sensitivities, SteadyMethod};
 use wearfem::problem::Problem;
 
 mod progress;
@@ -74,13 +76,29 @@ enum Command {
         set: Vec<String>,
     },
     /// Compute the steady worn state directly (no time integration); writes summary.json,
-    /// steady.csv and pressure.svg, shape.svg.
+    /// steady.csv and pressure.svg, shape.svg (and iterations.csv for reciprocating sliding).
     Steady {
         /// Problem file (TOML) or built-in example name.
         problem: String,
         /// Output directory.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// exact (semismooth Newton, default), or the paper's §6: averaged (eq. 39), spline
+        /// (§6.2), penalty (§6.3).
+        #[arg(long, default_value = "exact")]
+        method: String,
+        /// Reading of eq. 39: mean (what the paper's printed ordinates are) or sum (as printed).
+        #[arg(long, default_value = "mean")]
+        reading: String,
+        /// Spline sensitivities: fd (finite differences, eq. 46) or exact.
+        #[arg(long, default_value = "fd")]
+        sensitivities: String,
+        /// Penalty parameter c_n of the penalty method, MPa/mm (default: the contact stiffness).
+        #[arg(long)]
+        penalty: Option<f64>,
+        /// Convergence tolerance of the spline and penalty methods on eq. 49 (relative).
+        #[arg(long, default_value_t = 1e-3)]
+        tolerance: f64,
         /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
         #[arg(long)]
         vtk: bool,
@@ -143,7 +161,10 @@ enum Failure {
 
 impl From<JobError> for Failure {
     fn from(e: JobError) -> Self {
-        Failure::Input(e.to_string())
+        match e {
+            JobError::Problem(_) => Failure::Input(e.to_string()),
+            JobError::Compute(m) => Failure::Compute(m),
+        }
     }
 }
 
@@ -326,8 +347,27 @@ fn run(cli: Cli) -> Result<(), Failure> {
             out,
             vtk,
             set,
+            method,
+            reading,
+            sensitivities,
+            penalty,
+            tolerance,
         } => {
             let p = load(&problem, &set)?;
+            let reciprocating = p
+                .spec
+                .wear
+                .as_ref()
+                .is_some_and(|w| w.sliding == "reciprocating");
+            if method != "exact" || reciprocating {
+                let settings = method_settings(&reading, &sensitivities, penalty, tolerance)?;
+                let method = SteadyMethod::parse(&method).ok_or_else(|| {
+                    Failure::Input(format!(
+                        "--method: must be exact, averaged, spline or penalty, got \"{method}\""
+                    ))
+                })?;
+                return steady_by(&p, method, settings, &out, wants_vtk(vtk, &p));
+            }
             let (state, contact, seconds) = driver::steady(&p)?;
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds)?;
             if wants_vtk(vtk, &p) {
@@ -504,6 +544,88 @@ fn write_text(dir: &Path, name: &str, text: &str) -> Result<(), Failure> {
     std::fs::create_dir_all(dir)
         .and_then(|_| std::fs::write(&path, text))
         .map_err(|e| Failure::Compute(format!("cannot write {}: {e}", path.display())))
+}
+
+/// The settings of `wearfem steady --method ...` from its options.
+fn method_settings(
+    reading: &str,
+    sensitivities: &str,
+    penalty: Option<f64>,
+    tolerance: f64,
+) -> Result<MethodSettings, Failure> {
+    let reading = match reading {
+        "mean" => AveragedReading::Mean,
+        "sum" => AveragedReading::Sum,
+        other => {
+            return Err(Failure::Input(format!(
+                "--reading: must be mean or sum, got \"{other}\""
+            )))
+        }
+    };
+    let sensitivities = match sensitivities {
+        "fd" => Sensitivities::FiniteDifference,
+        "exact" => Sensitivities::Exact,
+        other => {
+            return Err(Failure::Input(format!(
+                "--sensitivities: must be fd or exact, got \"{other}\""
+            )))
+        }
+    };
+    if penalty.is_some_and(|c| !(c.is_finite() && c > 0.0)) {
+        return Err(Failure::Input(
+            "--penalty: must be a finite c_n > 0 (MPa/mm)".into(),
+        ));
+    }
+    if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 1.0) {
+        return Err(Failure::Input(format!(
+            "--tolerance: must lie in (0, 1), got {tolerance}"
+        )));
+    }
+    Ok(MethodSettings {
+        reading,
+        sensitivities,
+        penalty_stiffness: penalty,
+        tolerance,
+        ..Default::default()
+    })
+}
+
+/// `wearfem steady` for reciprocating sliding, by any method.
+fn steady_by(
+    p: &Problem,
+    method: SteadyMethod,
+    settings: MethodSettings,
+    out: &Path,
+    vtk: bool,
+) -> Result<(), Failure> {
+    let (outcome, contact, setup) = driver::steady_by(p, method, settings)?;
+    if outcome.state.status != wearfem::steady::SteadyStatus::Solved {
+        // Nothing from a failed solve is written as a result.
+        return Err(Failure::Compute(format!("the {} method did not converge in {} iterations ({:?}, eq. 49 residual {:.3e}); nothing was written", method.name(), outcome.state.iterations, outcome.state.status, outcome.residual)));
+    }
+    wearfem::output::write_steady_method(out, p, &contact, &outcome, setup)?;
+    if vtk {
+        wearfem::vtk::write_steady(out, p, &outcome.state)?;
+    }
+    if let Some(w) =
+        driver::edge_ends_warning(p, &driver::steady_edge_ends(&contact, &outcome.state))
+    {
+        eprintln!("{w}");
+    }
+    let last = outcome.history.last();
+    println!(
+        "{}: steady state by the {} method: {} iterations, {} contact solves, {:.4} s (+{:.4} s set-up); eq. 49 residual {:.2e}, max δw {:.2e} mm → {}",
+        p.file,
+        method.name(),
+        outcome.state.iterations,
+        outcome.contact_solves,
+        outcome.seconds,
+        setup,
+        outcome.residual,
+        last.map_or(f64::NAN, |r| r.max_delta_w),
+        out.display()
+    );
+    Ok(())
 }
 
 fn main() -> ExitCode {

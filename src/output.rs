@@ -394,3 +394,70 @@ pub fn write_contact(
     )
     .map_err(plot_error(&path))
 }
+
+/// Write a steady state found by [`crate::paper_steady::solve_steady`]: the keys and files of
+/// [`write_steady`] plus the method, its history of I_δw, max δw and the eq. 49 residual
+/// (also as iterations.csv), δw, the contact solves and the times (`seconds` with the set-up,
+/// `setup_seconds`, `method_seconds` without it).
+pub fn write_steady_method(
+    dir: &Path,
+    problem: &crate::problem::Problem,
+    contact: &crate::contact::CondensedContact,
+    outcome: &crate::paper_steady::MethodOutcome,
+    setup_seconds: f64,
+) -> Result<(), OutputError> {
+    // `seconds` keeps its meaning of `wearfem steady` before the methods: set-up included.
+    write_steady(
+        dir,
+        problem,
+        contact,
+        &outcome.state,
+        setup_seconds + outcome.seconds,
+    )?;
+    let path = dir.join("summary.json");
+    let text = fs::read_to_string(&path).map_err(io(&path))?;
+    let mut summary: Value = serde_json::from_str(&text).map_err(|e| OutputError {
+        path: path.display().to_string(),
+        source: std::io::Error::other(e),
+    })?;
+    let history: Vec<Value> = outcome
+        .history
+        .iter()
+        .map(|r| json!({ "iteration": r.iteration, "i_delta_w": number(r.i_delta_w), "max_delta_w": number(r.max_delta_w), "residual_eq49": number(r.residual) }))
+        .collect();
+    summary["method"] = json!(outcome.method.name());
+    summary["residual_eq49"] = number(outcome.residual);
+    summary["delta_w"] = numbers(&outcome.delta_w);
+    summary["max_delta_w"] = number(outcome.delta_w.iter().cloned().fold(0.0, f64::max));
+    summary["history"] = Value::Array(history);
+    summary["contact_solves"] = json!(outcome.contact_solves);
+    if let Some(c_n) = outcome.penalty_stiffness {
+        summary["penalty_stiffness"] = number(c_n);
+    }
+    summary["setup_seconds"] = json!(setup_seconds);
+    summary["method_seconds"] = json!(outcome.seconds);
+    write_json(dir, "summary.json", &summary)?;
+    let rows: Vec<Vec<Value>> = outcome
+        .history
+        .iter()
+        .map(|r| {
+            vec![
+                json!(r.iteration),
+                number(r.i_delta_w),
+                number(r.max_delta_w),
+                number(r.residual),
+            ]
+        })
+        .collect();
+    write_csv(
+        dir,
+        "iterations.csv",
+        &[
+            "iteration",
+            "i_delta_w_mm3",
+            "max_delta_w_mm",
+            "residual_eq49",
+        ],
+        &rows,
+    )
+}

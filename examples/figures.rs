@@ -1,0 +1,541 @@
+//! Our versions of the paper's figures (Fig. 4–9, 11–25) as SVG:
+//! `cargo run --release --example figures -- OUTDIR`. docs/figures.md shows them with the
+//! paper's. The plotting is here, apart from src/plot.rs, so that a PNG backend can be switched
+//! on for these figures alone later.
+
+use plotters::prelude::*;
+use std::path::{Path, PathBuf};
+use wearfem::complementarity::{ContactSolver, Direction, Method};
+use wearfem::contact::CondensedContact;
+use wearfem::monotonic_shape::{averaged_shape, AveragedReading};
+use wearfem::paper_steady::{solve_steady, MethodOutcome, MethodSettings, SteadyMethod};
+use wearfem::problem::Problem;
+use wearfem::wear::WearIntegrator;
+
+/// One curve: legend, points, dashed or not.
+struct Curve {
+    label: String,
+    points: Vec<(f64, f64)>,
+    dashed: bool,
+}
+
+fn curve(label: &str, x: &[f64], y: &[f64], scale: f64) -> Curve {
+    Curve {
+        label: label.to_string(),
+        points: x.iter().zip(y).map(|(a, b)| (*a, b * scale)).collect(),
+        dashed: false,
+    }
+}
+
+fn plot(path: &Path, title: &str, xl: &str, yl: &str, curves: &[Curve]) {
+    let all = curves.iter().flat_map(|c| c.points.iter());
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for &(x, y) in all {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    let dy = 0.05 * (y1 - y0).max(1e-12);
+    let root = SVGBackend::new(path, (800, 520)).into_drawing_area();
+    root.fill(&WHITE).unwrap();
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 18))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x0..x1, (y0 - dy)..(y1 + dy))
+        .unwrap();
+    chart.configure_mesh().x_desc(xl).y_desc(yl).draw().unwrap();
+    let colours = [
+        BLUE,
+        RED,
+        BLACK,
+        GREEN,
+        MAGENTA,
+        CYAN,
+        RGBColor(200, 120, 0),
+        RGBColor(120, 0, 200),
+        RGBColor(120, 120, 120),
+        RGBColor(0, 130, 70),
+    ];
+    for (k, c) in curves.iter().enumerate() {
+        let colour = colours[k % colours.len()];
+        let style = colour.stroke_width(2);
+        if c.dashed {
+            chart
+                .draw_series(c.points.iter().map(|&p| Circle::new(p, 3, style)))
+                .unwrap()
+                .label(c.label.as_str())
+                .legend(move |(x, y)| Circle::new((x + 10, y), 3, style));
+        } else {
+            chart
+                .draw_series(LineSeries::new(c.points.clone(), style))
+                .unwrap()
+                .label(c.label.as_str())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        }
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .unwrap();
+    root.present().unwrap();
+}
+
+struct Case {
+    contact: CondensedContact,
+    terms: Vec<(f64, f64)>,
+    x: Vec<f64>,
+}
+
+fn case(name: &str) -> Case {
+    let p = Problem::from_toml(wearfem::examples::example(name).unwrap(), name).unwrap();
+    let (contact, _, _) = CondensedContact::build(&p).unwrap();
+    let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
+        .unwrap()
+        .half_period_wear();
+    let x = contact.points.x.iter().map(|q| q[0]).collect();
+    Case { contact, terms, x }
+}
+
+fn run(c: &Case, method: SteadyMethod, max_iterations: usize) -> MethodOutcome {
+    let settings = MethodSettings {
+        max_iterations,
+        ..Default::default()
+    };
+    solve_steady(&c.contact, &c.terms, method, settings).unwrap()
+}
+
+/// `shape` shifted to zero at the contact point nearest `x0`.
+fn zeroed(x: &[f64], shape: &[f64], x0: f64) -> Vec<f64> {
+    let i = (0..x.len())
+        .min_by(|&a, &b| (x[a] - x0).abs().total_cmp(&(x[b] - x0).abs()))
+        .unwrap();
+    shape.iter().map(|g| g - shape[i]).collect()
+}
+
+fn main() {
+    let out = PathBuf::from(std::env::args().nth(1).unwrap_or_else(|| "figures".into()));
+    std::fs::create_dir_all(&out).unwrap();
+    let um = "shape (µm)";
+    // Fig. 15, 16: monotonic shapes and their average, against the steady shape.
+    let a = case("punch-a");
+    let avg = averaged_shape(&a.contact, &a.terms, AveragedReading::Mean).unwrap();
+    let sum = averaged_shape(&a.contact, &a.terms, AveragedReading::Sum).unwrap();
+    plot(
+        &out.join("fig15.svg"),
+        "Fig. 15: monotonic steady shapes (punch-a, plane stress)",
+        "x (mm)",
+        um,
+        &[
+            curve(
+                "shape(l), leftward, g(1070) = 0",
+                &a.x,
+                &avg.left.shape,
+                1e3,
+            ),
+            curve(
+                "shape(r), rightward, g(1130) = 0",
+                &a.x,
+                &avg.right.shape,
+                1e3,
+            ),
+            curve("Shape(a), mean reading", &a.x, &avg.shape, 1e3),
+            curve("Shape(a), eq. 39 as printed (sum)", &a.x, &sum.shape, 1e3),
+        ],
+    );
+    let exact = run(&a, SteadyMethod::Exact, 100);
+    let steady = zeroed(&a.x, &exact.state.shape, 1100.0);
+    plot(
+        &out.join("fig16.svg"),
+        "Fig. 16: averaged monotonic shape vs periodic steady shape (punch-a)",
+        "x (mm)",
+        um,
+        &[
+            curve("Shape(a), mean", &a.x, &avg.shape, 1e3),
+            curve("Shape(a), sum (eq. 39)", &a.x, &sum.shape, 1e3),
+            curve("periodic steady shape (exact)", &a.x, &steady, 1e3),
+        ],
+    );
+    // Fig. 20: spline modifications m_s = 0 … 3 and the end.
+    let mut curves = Vec::new();
+    for (label, k) in [
+        ("m_s = 0 (after eq. 44)", 0),
+        ("m_s = 1", 1),
+        ("m_s = 2", 2),
+        ("m_s = 3", 3),
+        ("end", 20),
+    ] {
+        let o = run(&a, SteadyMethod::Spline, k);
+        curves.push(curve(
+            label,
+            &a.x,
+            &zeroed(&a.x, &o.state.shape, 1100.0),
+            1e3,
+        ));
+    }
+    let mut e = curve("exact steady state", &a.x, &steady, 1e3);
+    e.dashed = true;
+    curves.push(e);
+    plot(
+        &out.join("fig20.svg"),
+        "Fig. 20: spline modifications (punch-a, fd sensitivities)",
+        "x (mm)",
+        um,
+        &curves,
+    );
+    // Fig. 19, 21, 22: the spline method's iterates, their shapes and pressures.
+    let spline = run(&a, SteadyMethod::Spline, 20);
+    let mut solver = ContactSolver::new(&a.contact, Method::ActiveSet);
+    let mut pressure = |shape: &[f64], d: Direction| -> Vec<f64> {
+        let gap: Vec<f64> = a
+            .contact
+            .points
+            .initial_gap
+            .iter()
+            .zip(shape)
+            .map(|(g, s)| g + s)
+            .collect();
+        solver.solve(&gap, d).0.pressure
+    };
+    let label = |k: usize| -> String {
+        if k <= 7 {
+            format!("m = {k}")
+        } else {
+            format!("m_s = {}", k - 8)
+        }
+    };
+    let poly: Vec<&(usize, Vec<f64>)> = spline.iterates.iter().filter(|(k, _)| *k <= 7).collect();
+    let newton: Vec<&(usize, Vec<f64>)> = spline
+        .iterates
+        .iter()
+        .filter(|(k, _)| *k >= 8 && *k <= 11)
+        .collect();
+    let mut curves: Vec<Curve> = poly
+        .iter()
+        .map(|(k, g)| curve(&label(*k), &a.x, &zeroed(&a.x, g, 1100.0), 1e3))
+        .collect();
+    let mut e = curve("exact steady state", &a.x, &steady, 1e3);
+    e.dashed = true;
+    curves.push(e);
+    plot(
+        &out.join("fig19.svg"),
+        "Fig. 19: polynomial iteration (eq. 44, q = 9, Δ = 0.0004 mm), punch-a",
+        "x (mm)",
+        um,
+        &curves,
+    );
+    for (fig, set, what) in [
+        ("fig21", &poly, "polynomial iteration"),
+        ("fig22", &newton, "spline modifications"),
+    ] {
+        for (d, sub, dir) in [
+            (Direction::Plus, "a", "rightward (+)"),
+            (Direction::Minus, "b", "leftward (−)"),
+        ] {
+            let mut curves: Vec<Curve> = set
+                .iter()
+                .map(|(k, g)| curve(&label(*k), &a.x, &pressure(g, d), 1.0))
+                .collect();
+            let steady_p = if d == Direction::Plus {
+                &exact.state.p_plus
+            } else {
+                &exact.state.p_minus
+            };
+            let mut e = curve("exact steady state", &a.x, steady_p, 1.0);
+            e.dashed = true;
+            curves.push(e);
+            plot(
+                &out.join(format!("{fig}{sub}.svg")),
+                &format!("{fig}{sub}: pressure during the {what}, {dir} sliding (punch-a)"),
+                "x (mm)",
+                "p (MPa)",
+                &curves,
+            );
+        }
+    }
+    // Fig. 23: steady pressures.
+    plot(
+        &out.join("fig23.svg"),
+        "Fig. 23a: contact pressure in the periodic steady state (punch-a)",
+        "x (mm)",
+        "p (MPa)",
+        &[
+            curve("p+", &a.x, &exact.state.p_plus, 1.0),
+            curve("p-", &a.x, &exact.state.p_minus, 1.0),
+            curve(
+                "p+ + p-",
+                &a.x,
+                &exact
+                    .state
+                    .p_plus
+                    .iter()
+                    .zip(&exact.state.p_minus)
+                    .map(|(p, q)| p + q)
+                    .collect::<Vec<_>>(),
+                1.0,
+            ),
+        ],
+    );
+    // Fig. 24, 25: penalty iteration, shape and '+' pressure evolution.
+    for (name, fig) in [("punch-a", "fig24"), ("punch-b40", "fig25")] {
+        let c = case(name);
+        let (mut shapes, mut pressures, mut sums) = (Vec::new(), Vec::new(), Vec::new());
+        for k in [1, 50, 100, 200, 300, 500, 5000] {
+            let o = run(&c, SteadyMethod::Penalty, k);
+            let label = if k == 5000 {
+                format!("converged ({})", o.state.iterations)
+            } else {
+                format!("i = {k}")
+            };
+            shapes.push(curve(
+                &label,
+                &c.x,
+                &zeroed(&c.x, &o.state.shape, 1100.0),
+                1e3,
+            ));
+            pressures.push(curve(&label, &c.x, &o.state.p_plus, 1.0));
+            let s: Vec<f64> = o
+                .state
+                .p_plus
+                .iter()
+                .zip(&o.state.p_minus)
+                .map(|(p, q)| p + q)
+                .collect();
+            sums.push(curve(&label, &c.x, &s, 1.0));
+        }
+        plot(
+            &out.join(format!("{fig}a.svg")),
+            &format!("{fig}: penalty iteration, shape ({name})"),
+            "x (mm)",
+            um,
+            &shapes,
+        );
+        plot(
+            &out.join(format!("{fig}b.svg")),
+            &format!("{fig}: penalty iteration, p+ ({name})"),
+            "x (mm)",
+            "p+ (MPa)",
+            &pressures,
+        );
+        plot(
+            &out.join(format!("{fig}e.svg")),
+            &format!("{fig}: penalty iteration, p+ + p- ({name})"),
+            "x (mm)",
+            "p+ + p- (MPa)",
+            &sums,
+        );
+    }
+    // Fig. 14: brake, averaged monotonic shape vs steady shape, zeroed at the contact ends by
+    // the plate's vertical motion (gap pattern cos α).
+    let b = case("brake");
+    let bavg = averaged_shape(&b.contact, &b.terms, AveragedReading::Mean).unwrap();
+    let bsum = averaged_shape(&b.contact, &b.terms, AveragedReading::Sum).unwrap();
+    let bex = run(&b, SteadyMethod::Exact, 100);
+    let r = b.contact.rigid_gap_matrix();
+    let ends = |g: &[f64]| -> Vec<f64> {
+        g.iter()
+            .enumerate()
+            .map(|(i, v)| v - g[0] / r[0] * r[i])
+            .collect()
+    };
+    plot(
+        &out.join("fig14.svg"),
+        "Fig. 14: brake, averaged monotonic shape vs steady shape",
+        "x (mm)",
+        um,
+        &[
+            curve("averaged, mean", &b.x, &ends(&bavg.shape), 1e3),
+            curve("averaged, sum (eq. 39)", &b.x, &ends(&bsum.shape), 1e3),
+            curve(
+                "periodic steady shape (exact)",
+                &b.x,
+                &ends(&bex.state.shape),
+                1e3,
+            ),
+        ],
+    );
+    integration_figures(&out);
+    println!("figures written to {}", out.display());
+}
+
+/// The wear run of built-in example `name`.
+fn wear_run(name: &str) -> (wearfem::driver::WearRun, Vec<f64>) {
+    let p = Problem::from_toml(wearfem::examples::example(name).unwrap(), name).unwrap();
+    let r = wearfem::driver::wear(&p, None, |_| {}).unwrap();
+    let x = r.contact.points.x.iter().map(|q| q[0]).collect();
+    (r, x)
+}
+
+/// Snapshot pressures and shapes of a run: one curve per recorded step.
+fn snapshots(r: &wearfem::driver::WearRun, x: &[f64], shape: bool, zero_at: f64) -> Vec<Curve> {
+    r.history
+        .snapshots
+        .iter()
+        .map(|s| {
+            let label = format!(
+                "n = {} ({}, half period {})",
+                s.step, s.direction, s.half_period
+            );
+            if shape {
+                curve(&label, x, &zeroed(x, &s.shape, zero_at), 1e3)
+            } else {
+                curve(&label, x, &s.pressure, 1.0)
+            }
+        })
+        .collect()
+}
+
+fn integration_figures(out: &Path) {
+    let um = "shape (µm)";
+    // Fig. 4: punch-b40, pressure snapshots and shape evolution.
+    let (r, x) = wear_run("punch-b40");
+    plot(
+        &out.join("fig04a.svg"),
+        "Fig. 4a: contact pressure at steps n (punch-b40)",
+        "x (mm)",
+        "p (MPa)",
+        &snapshots(&r, &x, false, 1100.0),
+    );
+    plot(
+        &out.join("fig04b.svg"),
+        "Fig. 4b: shape evolution (punch-b40), zero at x = 1100",
+        "x (mm)",
+        um,
+        &snapshots(&r, &x, true, 1100.0),
+    );
+    // Fig. 17, 18: dissipation per half period and δw per cycle (punch-a, as §6.1).
+    let (ra, _) = wear_run("punch-a");
+    let series = |dir: &str, f: &dyn Fn(&wearfem::wear::StepRecord) -> f64| -> Vec<(f64, f64)> {
+        ra.history
+            .steps
+            .iter()
+            .filter(|s| s.direction == dir)
+            .map(|s| (s.half_period as f64, f(s)))
+            .collect()
+    };
+    plot(
+        &out.join("fig17.svg"),
+        "Fig. 17: wear dissipation of a half period (punch-a)",
+        "half period n",
+        "E_w (N mm)",
+        &[
+            Curve {
+                label: "'+' half periods".into(),
+                points: series("+", &|s| s.dissipation),
+                dashed: false,
+            },
+            Curve {
+                label: "'−' half periods".into(),
+                points: series("−", &|s| s.dissipation),
+                dashed: false,
+            },
+        ],
+    );
+    plot(
+        &out.join("fig18.svg"),
+        "Fig. 18: log10 max δw of a cycle (eq. 40, punch-a)",
+        "half period n",
+        "log10 max δw (mm)",
+        &[Curve {
+            label: "max δw".into(),
+            points: series("−", &|s| s.delta_w.max(1e-30).log10()),
+            dashed: false,
+        }],
+    );
+    // Fig. 5: the wear exponent b, steady states (exact method).
+    let mut pressures = Vec::new();
+    let mut shapes = Vec::new();
+    for name in ["punch-b40-b0.8", "punch-b40", "punch-b40-b1.2"] {
+        let p = Problem::from_toml(wearfem::examples::example(name).unwrap(), name).unwrap();
+        let (st, contact, _) = wearfem::driver::steady(&p).unwrap();
+        let xs: Vec<f64> = contact.points.x.iter().map(|q| q[0]).collect();
+        pressures.push(curve(&format!("{name}: p+"), &xs, &st.p_plus, 1.0));
+        shapes.push(curve(name, &xs, &zeroed(&xs, &st.shape, 1100.0), 1e3));
+    }
+    plot(
+        &out.join("fig05a.svg"),
+        "Fig. 5a: steady pressure p+ for b = 0.8, 1, 1.2",
+        "x (mm)",
+        "p+ (MPa)",
+        &pressures,
+    );
+    plot(
+        &out.join("fig05b.svg"),
+        "Fig. 5b: steady shape for b = 0.8, 1, 1.2",
+        "x (mm)",
+        um,
+        &shapes,
+    );
+    // Fig. 6–9: load variants 2 and 3.
+    for (name, fp, fs, label) in [
+        ("punch-b40-variant2", "fig06", "fig07", "variant 2"),
+        ("punch-b40-variant3", "fig08", "fig09", "variant 3"),
+    ] {
+        let (r, x) = wear_run(name);
+        plot(
+            &out.join(format!("{fp}.svg")),
+            &format!("{fp}: contact pressure at steps n, load {label}"),
+            "x (mm)",
+            "p (MPa)",
+            &snapshots(&r, &x, false, 1100.0),
+        );
+        let sum: Vec<f64> = r
+            .history
+            .p_plus
+            .iter()
+            .zip(&r.history.p_minus)
+            .map(|(a, b)| a + b)
+            .collect();
+        plot(
+            &out.join(format!("{fp}-sum.svg")),
+            &format!("{fp}: summed pressure of the last cycle, load {label}"),
+            "x (mm)",
+            "p+ + p- (MPa)",
+            &[curve("p+ + p-, n = 1699–1700", &x, &sum, 1.0)],
+        );
+        plot(
+            &out.join(format!("{fs}.svg")),
+            &format!("{fs}: shape evolution, load {label}, zero at x = 1100"),
+            "x (mm)",
+            um,
+            &snapshots(&r, &x, true, 1100.0),
+        );
+    }
+    // Fig. 11–13: brake.
+    let (rb, xb) = wear_run("brake");
+    plot(
+        &out.join("fig11.svg"),
+        "Fig. 11: brake, contact pressure at steps n",
+        "x (mm)",
+        "p (MPa)",
+        &snapshots(&rb, &xb, false, 0.0),
+    );
+    let crown: Vec<(f64, f64)> = rb
+        .history
+        .steps
+        .windows(2)
+        .map(|w| (w[1].step as f64, w[0].probes[0] + w[1].probes[0]))
+        .collect();
+    plot(
+        &out.join("fig12.svg"),
+        "Fig. 12: brake, p_Σ(0) = p+ + p- at the crown",
+        "step n",
+        "p_Σ(0) (MPa)",
+        &[Curve {
+            label: "p_Σ(0)".into(),
+            points: crown,
+            dashed: false,
+        }],
+    );
+    plot(
+        &out.join("fig13.svg"),
+        "Fig. 13: brake, shape evolution (zero at the crown)",
+        "x (mm)",
+        um,
+        &snapshots(&rb, &xb, true, 0.0),
+    );
+}

@@ -1,0 +1,166 @@
+//! The monotonic steady shapes (paper eq. 38) and the averaged shape (eq. 39) of Example 1
+//! against the ordinates the paper prints in §6.2.1, and of the brake (Fig. 14).
+
+mod common;
+use common::problem;
+use wearfem::contact::CondensedContact;
+use wearfem::monotonic_shape::{averaged_shape, AveragedReading};
+use wearfem::wear::WearIntegrator;
+
+/// The averaged monotonic shape of Example 1 as printed in §6.2.1 (x mm, Shape mm), typed in
+/// from the paper's table (points 3–17; point 7 is illegible in our copy, 1 and 2 are not
+/// printed).
+const PRINTED: [(f64, f64); 14] = [
+    (1071.5, 0.14934270e-2),
+    (1073.63, 0.11869800e-2),
+    (1075.75, 0.95190000e-3),
+    (1077.88, 0.76108000e-3),
+    (1090.0, 0.13810000e-3),
+    (1100.0, 0.0),
+    (1113.63, 0.26240500e-3),
+    (1120.0, 0.60244000e-3),
+    (1122.13, 0.76135000e-3),
+    (1124.25, 0.95234000e-3),
+    (1126.38, 0.11876850e-2),
+    (1128.5, 0.14945845e-2),
+    (1129.25, 0.16349025e-2),
+    (1130.0, 0.18279500e-2),
+];
+
+/// Value at `x` of the profile `v` given at the contact points `xs` (x rising): Lagrange
+/// through the 6 nearest points. Six points of a p = 8 trace away from the corners are good
+/// to well below 0.1 % of the shape's range.
+fn at(xs: &[f64], v: &[f64], x: f64) -> f64 {
+    let mut idx: Vec<usize> = (0..xs.len()).collect();
+    idx.sort_by(|&a, &b| (xs[a] - x).abs().total_cmp(&(xs[b] - x).abs()));
+    let near = &idx[..6];
+    near.iter()
+        .map(|&i| {
+            let l: f64 = near
+                .iter()
+                .filter(|&&j| j != i)
+                .map(|&j| (x - xs[j]) / (xs[i] - xs[j]))
+                .product();
+            l * v[i]
+        })
+        .sum()
+}
+
+fn averaged(name: &str, edits: &[(&str, &str)], reading: AveragedReading) -> (Vec<f64>, Vec<f64>) {
+    let p = problem(name, edits);
+    let (contact, _, _) = CondensedContact::build(&p).unwrap();
+    let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
+        .unwrap()
+        .half_period_wear();
+    let avg = averaged_shape(&contact, &terms, reading).unwrap();
+    (contact.points.x.iter().map(|q| q[0]).collect(), avg.shape)
+}
+
+/// Largest |ours − printed| over the printed ordinates, as a fraction of the largest printed.
+fn misfit(kind: &str, reading: AveragedReading) -> f64 {
+    let edit = [("kind = \"plane_stress\"", &*format!("kind = \"{kind}\""))];
+    let (x, shape) = averaged("punch-a", &edit, reading);
+    let largest = PRINTED.iter().map(|p| p.1).fold(0.0, f64::max);
+    PRINTED
+        .iter()
+        .map(|&(xp, sp)| (at(&x, &shape, xp) - sp).abs())
+        .fold(0.0, f64::max)
+        / largest
+}
+
+#[test]
+fn printed_averaged_shape_is_the_mean_of_the_monotonic_shapes_in_plane_strain() {
+    // The issue's criterion: every printed ordinate to 3 % of the largest. The paper's mesh
+    // and spline points are not ours, so a few per cent is what can be asked. Measured: 2.5 %
+    // for the mean in plane strain; the mean in plane stress misses by 7.9 %, the sum by 95 %
+    // (plane strain) and 116 % (plane stress), so the verdict does not hang on the tolerance.
+    let fit = misfit("plane_strain", AveragedReading::Mean);
+    eprintln!("plane_strain Mean: misfit {:.2} %", 100.0 * fit);
+    assert!(
+        fit < 0.03,
+        "mean, plane strain: misfit {:.2} %",
+        100.0 * fit
+    );
+    for (kind, reading) in [
+        ("plane_stress", AveragedReading::Mean),
+        ("plane_stress", AveragedReading::Sum),
+        ("plane_strain", AveragedReading::Sum),
+    ] {
+        let m = misfit(kind, reading);
+        eprintln!("{kind} {reading:?}: misfit {:.2} %", 100.0 * m);
+        assert!(
+            m > 0.05,
+            "{kind} {reading:?}: misfit only {:.2} %",
+            100.0 * m
+        );
+    }
+}
+
+#[test]
+fn translating_punch_monotonic_shapes_are_mirror_images_under_uniform_pressure() {
+    let p = problem("punch-a", &[]);
+    let (contact, _, _) = CondensedContact::build(&p).unwrap();
+    let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
+        .unwrap()
+        .half_period_wear();
+    let sum = averaged_shape(&contact, &terms, AveragedReading::Sum).unwrap();
+    let mean = averaged_shape(&contact, &terms, AveragedReading::Mean).unwrap();
+    // §6.1: the monotonic optimum of a translating flat punch is the uniform p̃ = F₀/(L t);
+    // the steady solve is exact, so round-off only.
+    let p_tilde = 16.666;
+    for shape in [&sum.left, &sum.right] {
+        for p in &shape.pressure {
+            assert!((p - p_tilde).abs() < 1e-9 * p_tilde, "{p}");
+        }
+    }
+    // The model is symmetric about x = 1100 (punch, strip mesh, load), and reversing the
+    // sliding mirrors the friction: shape⁽ʳ⁾(x) = shape⁽ˡ⁾(2200 − x), the contact points being
+    // symmetric too. Round-off of the condensed flexibility, hence 1e-8 of the range.
+    let n = contact.len();
+    let range = sum.left.shape.iter().cloned().fold(0.0, f64::max);
+    assert!(range > 0.0);
+    for i in 0..n {
+        let mirror = n - 1 - i;
+        assert!((contact.points.x[i][0] + contact.points.x[mirror][0] - 2200.0).abs() < 1e-9);
+        let (l, r) = (sum.left.shape[i], sum.right.shape[mirror]);
+        assert!((l - r).abs() < 1e-8 * range, "point {i}: {l} vs {r}");
+    }
+    // Zeroing as the paper does: g(1070) = 0 leftward, g(1130) = 0 rightward, Shape⁽ᵃ⁾(1100) = 0.
+    assert_eq!(sum.left.shape[0], 0.0);
+    assert_eq!(sum.right.shape[n - 1], 0.0);
+    assert!(sum.shape[sum.mid].abs() < 1e-15);
+    assert!((contact.points.x[sum.mid][0] - 1100.0).abs() < 1e-9);
+    for (s, m) in sum.shape.iter().zip(&mean.shape) {
+        assert!((s - 2.0 * m).abs() < 1e-15);
+    }
+}
+
+#[test]
+fn brake_averaged_shape_does_not_depend_on_friction_and_overestimates_the_steady_shape() {
+    // §5.2: "the shape does not depend on the coefficient of friction" ([13]) and "the
+    // averaging technique ... provides an overestimated wear form" (Fig. 14). Both shapes are
+    // moved by the plate's vertical motion (gap pattern cos α) to zero at the contact ends, so
+    // that the crown value is the depth of the worn form.
+    let mut crowns = Vec::new();
+    for mu in ["0.25", "0.0", "0.5"] {
+        let p = problem(
+            "brake",
+            &[("friction = 0.25", &*format!("friction = {mu}"))],
+        );
+        let (contact, _, _) = CondensedContact::build(&p).unwrap();
+        let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
+            .unwrap()
+            .half_period_wear();
+        let avg = averaged_shape(&contact, &terms, AveragedReading::Mean).unwrap();
+        let (exact, _, _) = wearfem::driver::steady(&p).unwrap();
+        let r = contact.rigid_gap_matrix();
+        let from_ends = |g: &[f64]| g[avg.mid] - g[0] / r[0] * r[avg.mid];
+        let (a, e) = (from_ends(&avg.shape), from_ends(&exact.shape));
+        assert!(a.abs() > e.abs(), "μ = {mu}: averaged {a:e} vs exact {e:e}");
+        crowns.push(a);
+    }
+    // Friction cancels between the two directions: round-off of the flexibility only.
+    for c in &crowns[1..] {
+        assert!((c - crowns[0]).abs() < 1e-9 * crowns[0].abs(), "{crowns:?}");
+    }
+}
