@@ -21,9 +21,11 @@ use crate::lemke::lemke;
 
 /// Largest complementarity or equilibrium residual (relative, see [`SolveInfo`]) with which a
 /// solve counts as [`Status::Solved`]. Exact solves reach 1e-13 or better on the paper's
-/// problems; 1e-8 leaves room for ill-conditioned flexibilities without accepting a wrong
-/// active set, whose residual is of order one.
-pub const ACCEPTED_RESIDUAL: f64 = 1e-8;
+/// mesh; the flexibility's condition number grows with refinement, and at 1025 contact points
+/// (128 elements under the punch) round-off alone reaches 1e-8 in a wear step with a large
+/// wear compliance. A wrong active set leaves a residual of order one, so 1e-6 still tells
+/// the two apart by orders of magnitude.
+pub const ACCEPTED_RESIDUAL: f64 = 1e-6;
 
 /// How the complementarity problem is solved.
 #[derive(Clone, Copy, Debug, PartialEq)]

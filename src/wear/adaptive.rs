@@ -35,7 +35,8 @@ pub struct AdaptiveSpec {
     /// ([`super::SteadyDistance::wear`]; default 1e-3).
     #[serde(default = "default_tolerance")]
     pub steady_tolerance: f64,
-    /// Largest factor k (default 4096).
+    /// Largest factor k (default 64: larger factors let the contact-zone ends lag; at 32
+    /// elements under the punch k ≤ 4096 stopped 1.7 % of the peak away, k ≤ 64 0.3 %).
     #[serde(default = "default_max_factor")]
     pub max_factor: usize,
 }
@@ -44,7 +45,7 @@ fn default_tolerance() -> f64 {
     1e-3
 }
 fn default_max_factor() -> usize {
-    4096
+    64
 }
 
 impl Default for AdaptiveSpec {

@@ -51,7 +51,8 @@ impl std::fmt::Display for StopReason {
                 equilibrium,
             } => write!(
                 f,
-                "a contact solve failed (complementarity residual {complementarity:.2e}, equilibrium residual {equilibrium:.2e}; a solve counts as solved below 1e-8)"
+                "a contact solve failed (complementarity residual {complementarity:.2e}, equilibrium residual {equilibrium:.2e}; a solve counts as solved below {:.0e})",
+                crate::complementarity::ACCEPTED_RESIDUAL
             ),
             StopReason::NonFiniteWear => write!(f, "the wear stopped being finite"),
             StopReason::SteadyState => write!(f, "the steady state was reached"),
