@@ -333,15 +333,49 @@ fn project_on_body2(
     ))
 }
 
-/// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces,
-/// by the Schur complement onto the trace dofs ([`ElasticBody::trace_flexibility`]).
+/// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces.
+///
+/// Two ways give the same G to round-off (tested in `elasticity::schur`): 2N solves with the
+/// body's factorisation, or the Schur complement onto the trace dofs
+/// ([`ElasticBody::trace_flexibility`]), which costs one more sparse factorisation but grows
+/// far more gently with N. Below [`SCHUR_FROM_POINTS`] points the solves are cheaper.
 fn flexibility(
     problem: &Problem,
     body: &ElasticBody,
     traces: &[Trace],
 ) -> Result<Mat<f64>, ProblemError> {
+    if traces.len() < SCHUR_FROM_POINTS && std::env::var_os("WEARFEM_SCHUR").is_none() {
+        return Ok(flexibility_by_solves(body, traces));
+    }
     body.trace_flexibility(traces)
         .map_err(|e| problem.error("contact", e.to_string()))
+}
+
+/// Contact points from which the Schur complement is the cheaper way to the flexibility of
+/// Example 1's bodies (docs/performance.md, "Refining the contact").
+pub const SCHUR_FROM_POINTS: usize = 120;
+
+/// G by one multi-right-hand-side solve with the body's factorisation.
+fn flexibility_by_solves(body: &ElasticBody, traces: &[Trace]) -> Mat<f64> {
+    let n = traces.len();
+    let n_dofs = body.dofs.n_dofs();
+    let mut rhs = Mat::<f64>::zeros(n_dofs, 2 * n);
+    for (i, tr) in traces.iter().enumerate() {
+        for &(g, coef) in tr {
+            for c in 0..2 {
+                rhs[(g[c], 2 * i + c)] += coef;
+            }
+        }
+    }
+    body.solve_in_place(&mut rhs);
+    Mat::from_fn(2 * n, 2 * n, |r, col| {
+        let (i, c) = (r / 2, r % 2);
+        traces[i]
+            .iter()
+            .filter(|(g, _)| !body.is_fixed(g[c]))
+            .map(|&(g, coef)| coef * rhs[(g[c], col)])
+            .sum()
+    })
 }
 
 /// Body 2's trace of every constraint, filling in the initial gaps (and, for mortar, the
