@@ -1,6 +1,6 @@
 //! Our versions of the paper's figures (Fig. 4–9, 11–25) as SVG:
 //! `cargo run --release --example figures -- OUTDIR`. docs/figures.md shows them with the
-//! paper's. The plotting is here, apart from src/plot.rs, so that a PNG backend can be switched
+//! paper's. The plotting is here, apart from src/report/plot.rs, so that a PNG backend can be switched
 //! on for these figures alone later.
 
 use plotters::prelude::*;

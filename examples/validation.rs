@@ -1,6 +1,6 @@
 //! Prints the detailed figures of docs/validation.md (full Table 2, p-refinement tables,
 //! "Beyond the paper"): `cargo run --release --example validation`. The PASS/FAIL table of the
-//! same claims is `wearfem validate` (src/validate.rs).
+//! same claims is `wearfem validate` (src/jobs/validate.rs).
 //!
 //! Every number is computed here from the built-in examples; the expected values are the
 //! paper's (Table 2, §5.1.1) or closed-form theory (Lamé, eq. 19, eq. 23).

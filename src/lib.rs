@@ -5,7 +5,9 @@
 //! the condensed contact points, and the Archard-type wear rule integrated over thousands of
 //! half periods of reciprocating sliding.
 //!
-//! The modules form a pipeline; each uses only the ones above it:
+//! The modules form a pipeline, grouped in folders by stage (`fe`, `input`, `contact` with
+//! `solver`, `wear` and `steady_state`, `jobs`, `report`); each module is also reachable at
+//! the crate root under its own name:
 //!
 //! | stage | module | entry type |
 //! |---|---|---|
@@ -39,34 +41,21 @@
 
 #![warn(missing_docs)]
 
-pub mod basis;
-pub mod complementarity;
 pub mod contact;
-pub mod deformation;
-pub mod dense;
-pub mod dofs;
-pub mod driver;
-pub mod elasticity;
-pub mod examples;
-pub mod fields;
-pub mod geometry;
-pub mod kinematics;
-pub mod lemke;
-pub mod loads;
-pub mod material;
-pub mod mesh;
-pub mod monotonic_shape;
-pub mod output;
-pub mod overrides;
-pub mod paper_steady;
-pub mod plot;
-pub mod problem;
-pub mod quadrature;
-pub mod schema;
-pub mod spline_method;
-pub mod steady;
-pub mod sweep;
-pub mod validate;
-pub mod vtk;
+pub mod fe;
+pub mod input;
+pub mod jobs;
+pub mod report;
+pub mod solver;
+pub mod steady_state;
 pub mod wear;
-pub mod wear_units;
+
+// Every stage's modules stay reachable at the crate root (`wearfem::basis`, …), as before the
+// folders grouped them.
+pub use fe::{basis, dofs, elasticity, fields, geometry, loads, material, mesh, quadrature};
+pub use input::{examples, overrides, problem, schema, wear_units};
+pub use jobs::{driver, sweep, validate};
+pub use report::{deformation, output, plot, vtk};
+pub use solver::{complementarity, dense, lemke};
+pub use steady_state::{monotonic_shape, paper_steady, spline_method, steady};
+pub use wear::kinematics;

@@ -13,6 +13,7 @@ pub use crate::kinematics::ScheduleEntry;
 use crate::kinematics::{half_period_sliding, paper_schedule};
 
 mod adaptive;
+pub mod kinematics;
 mod outcome;
 mod step;
 pub use adaptive::AdaptiveSpec;

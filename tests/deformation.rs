@@ -1,4 +1,4 @@
-//! The displacement fields recovered from a contact solution (src/deformation.rs) are the
+//! The displacement fields recovered from a contact solution (src/report/deformation.rs) are the
 //! fields the condensation reduced: their normal displacements at the contact points, with the
 //! undeformed gap, must give the solver's gap d = A_s P + R λ + g, and the plate's rigid modes
 //! rebuilt from two points must be the modes at every contact point.

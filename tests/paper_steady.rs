@@ -1,5 +1,5 @@
 //! The paper's §6 methods (averaged shape, spline, penalty) against the exact steady state of
-//! src/steady.rs on Example 1 (`punch-a`) and Example 2 of §6.3 (`punch-b40`).
+//! src/steady_state/steady.rs on Example 1 (`punch-a`) and Example 2 of §6.3 (`punch-b40`).
 
 mod common;
 use common::problem;

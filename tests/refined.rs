@@ -1,7 +1,7 @@
 //! The wear integration on meshes the paper did not use: the contact refined to 16, 32 (and,
 //! in docs/convergence.md, 64) elements under the punch with the strip's mesh lines matched,
 //! and p from 4 to 12 on the shipped mesh. The reference is the steady state computed
-//! directly on the same mesh (src/steady.rs, itself checked against eq. 19 and 23 in
+//! directly on the same mesh (src/steady_state/steady.rs, itself checked against eq. 19 and 23 in
 //! tests/steady.rs), which the 1700-step run of the shipped examples must approach.
 
 mod common;

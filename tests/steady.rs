@@ -1,4 +1,4 @@
-//! The steady worn state computed directly (src/steady.rs) against theory, against the contact
+//! The steady worn state computed directly (src/steady_state/steady.rs) against theory, against the contact
 //! solver, and as the limit of the time integration.
 
 mod common;

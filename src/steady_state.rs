@@ -1,0 +1,6 @@
+//! Steady worn states without time integration: the exact semismooth Newton solve, and the paper's §6 methods (monotonic and averaged shapes, spline and penalty iterations).
+
+pub mod monotonic_shape;
+pub mod paper_steady;
+pub mod spline_method;
+pub mod steady;
