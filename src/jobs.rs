@@ -1,5 +1,6 @@
 //! The jobs the command line and the Python layer run: elastic, contact, run and steady (driver), parameter studies (sweep), and the validation report.
 
 pub mod driver;
+pub mod json;
 pub mod sweep;
 pub mod validate;

@@ -1,12 +1,13 @@
 //! The three jobs of the command line as library functions: a static elastic solve, one
-//! contact solve and a wear run. Each returns its results; [`crate::output`] writes them.
+//! contact solve and a wear run. Each returns its results; the report stage
+//! ([`crate::output`]) writes them, and this module uses nothing of it.
 
 use crate::complementarity::{
     ContactSolution, ContactSolver, Direction, Method, SolveInfo, Status,
 };
 use crate::contact::CondensedContact;
 use crate::fields::strain_energy;
-use crate::output::{number, numbers};
+use crate::jobs::json::{number, numbers};
 use crate::problem::{Problem, ProblemError};
 use crate::wear::{WearHistory, WearIntegrator};
 use serde_json::{json, Value};
@@ -218,7 +219,7 @@ pub fn contact(
     let setup = start.elapsed().as_secs_f64();
     let mut solver = ContactSolver::new(&contact, method(problem)?);
     let (solution, info) = solver.solve(&contact.points.initial_gap, direction(problem)?);
-    let rigid = crate::output::named(&contact.rigid_names, &solution.rigid);
+    let rigid = crate::jobs::json::named(&contact.rigid_names, &solution.rigid);
     let probes: serde_json::Map<String, Value> = contact_probes(problem, &contact)
         .into_iter()
         .map(|(n, i)| (n, number(solution.pressure[i])))

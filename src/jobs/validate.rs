@@ -174,7 +174,7 @@ impl Report {
     /// The table as JSON: `checks` (id, quantity, unit, reference, source, ours, difference,
     /// bound {kind, value}, passed), `passed`, `quick`, `seconds`.
     pub fn json(&self) -> Value {
-        let number = crate::output::number;
+        let number = crate::jobs::json::number;
         let checks: Vec<Value> = self
             .checks
             .iter()
