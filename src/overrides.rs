@@ -289,6 +289,27 @@ pub fn parse_spec(
     Ok(spec)
 }
 
+/// A problem file's text with `overrides` applied, as TOML text (for `Problem.to_toml` in
+/// Python, and to save the variant of a study). Only the reading is checked here; validate the
+/// result with [`crate::problem::Problem::from_toml`].
+pub fn apply_to_text(
+    text: &str,
+    file: &str,
+    overrides: &[Override],
+) -> Result<String, ProblemError> {
+    let error = |key: &str, message: String| ProblemError {
+        file: file.into(),
+        key: key.into(),
+        message,
+    };
+    let mut table: toml::Table =
+        toml::from_str(text).map_err(|e| error("(file)", one_line(e.message())))?;
+    for o in overrides {
+        apply(&mut table, o).map_err(|m| error(&o.key, m))?;
+    }
+    toml::to_string(&table).map_err(|e| error("(file)", one_line(&e.to_string())))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
