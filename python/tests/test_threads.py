@@ -7,6 +7,7 @@ three so that one disturbed run does not decide.
 """
 
 import os
+import sys
 import threading
 import time
 
@@ -39,4 +40,45 @@ def test_two_threads_faster_than_one():
     problem.steady()  # warm-up (page faults, allocator)
     one = min(wall(1, problem) for _ in range(3))
     two = min(wall(2, problem) for _ in range(3))
-    assert two < 0.8 * one, f"{SOLVES} solves: 1 thread {one:.3f} s, 2 threads {two:.3f} s"
+    message = f"{SOLVES} solves: 1 thread {one:.3f} s, 2 threads {two:.3f} s"
+    if two >= 0.8 * one:
+        # Two threads cannot beat one when other processes already keep both cores busy;
+        # test_python_runs_during_a_solve below checks the release of the GIL regardless.
+        load = os.getloadavg()[0]
+        if load > (os.cpu_count() or 1) - 0.5:
+            pytest.skip(f"machine busy (load average {load:.1f}): {message}")
+    assert two < 0.8 * one, message
+
+
+def test_python_runs_during_a_solve():
+    """While the main thread is inside the library, another thread's Python loop must
+    advance. With the GIL held it could only run in the switch intervals (5 ms) granted at
+    the bytecode boundaries around the call: so demand more counts than 4 switch intervals
+    and a tenth of the call's duration would give at the loop's own rate. Independent of the
+    number of cores; a busy machine slows both the loop and the solve alike."""
+    problem = wearfem.Problem.builtin("punch-b40")._inner
+    counter = [0]
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            counter[0] += 1
+
+    t = threading.Thread(target=count)
+    t.start()
+    time.sleep(0.2)
+    c0, t0 = counter[0], time.perf_counter()
+    time.sleep(0.2)
+    rate = (counter[0] - c0) / (time.perf_counter() - t0)  # counts/s while the main thread sleeps
+    before = counter[0]
+    start = time.perf_counter()
+    problem._run(300, None)
+    after = counter[0]
+    seconds = time.perf_counter() - start
+    stop.set()
+    t.join()
+    leak = rate * max(4 * sys.getswitchinterval(), 0.1 * seconds)
+    assert after - before > leak, (
+        f"the counter advanced {after - before} during a {seconds:.3f} s run "
+        f"(rate {rate:.3g}/s): the GIL was held"
+    )
