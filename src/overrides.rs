@@ -324,6 +324,23 @@ mod tests {
     }
 
     #[test]
+    fn text_with_overrides_reads_as_the_overridden_spec() {
+        let o = [
+            Override::parse("contact.friction=0.4").unwrap(),
+            Override::parse("plate.pin=[1100, 120]").unwrap(),
+        ];
+        let text = apply_to_text(punch(), "f.toml", &o).unwrap();
+        let spec: ProblemSpec = toml::from_str(&text).unwrap();
+        assert_eq!(spec.contact.unwrap().friction, 0.4);
+        assert_eq!(spec.plate.unwrap().pin, Some([1100.0, 120.0]));
+        let bad = [Override::parse("bodies[7].name=x").unwrap()];
+        assert_eq!(
+            apply_to_text(punch(), "f.toml", &bad).unwrap_err().key,
+            "bodies[7].name"
+        );
+    }
+
+    #[test]
     fn values_reach_the_schema() {
         let spec = with(&[
             "plate.pin=[1100, 120]",

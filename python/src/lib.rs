@@ -93,7 +93,12 @@ struct PyProblem {
 }
 
 impl PyProblem {
-    fn build(py: Python<'_>, text: String, file: String, overrides: Vec<Override>) -> PyResult<Self> {
+    fn build(
+        py: Python<'_>,
+        text: String,
+        file: String,
+        overrides: Vec<Override>,
+    ) -> PyResult<Self> {
         let problem = py
             .allow_threads(|| Problem::with_overrides(&text, &file, &overrides))
             .map_err(|e| problem_error(py, &e))?;
@@ -117,7 +122,12 @@ impl PyProblem {
 
     /// Rebuild from (text, file, [(key, TOML value text)]): pickling, for process pools.
     #[staticmethod]
-    fn _restore(py: Python<'_>, text: String, file: String, sets: Vec<(String, String)>) -> PyResult<Self> {
+    fn _restore(
+        py: Python<'_>,
+        text: String,
+        file: String,
+        sets: Vec<(String, String)>,
+    ) -> PyResult<Self> {
         let overrides = sets
             .iter()
             .map(|(k, v)| Override::new(k, wearfem::overrides::parse_value(v)))
@@ -205,8 +215,7 @@ impl PyProblem {
         let out = py.allow_threads(|| {
             driver::steady(p).map(|(state, contact, seconds)| {
                 let mut summary = wearfem::output::steady_summary(p, &contact, &state, seconds);
-                summary["probe_points"] =
-                    serde_json::json!(driver::contact_probes(p, &contact));
+                summary["probe_points"] = serde_json::json!(driver::contact_probes(p, &contact));
                 summary
             })
         });
@@ -215,7 +224,12 @@ impl PyProblem {
 
     /// Wear run: summary JSON text. `progress(step, half_period)` is called after each step.
     #[pyo3(signature = (steps = None, progress = None))]
-    fn _run(&self, py: Python<'_>, steps: Option<usize>, progress: Option<PyObject>) -> PyResult<String> {
+    fn _run(
+        &self,
+        py: Python<'_>,
+        steps: Option<usize>,
+        progress: Option<PyObject>,
+    ) -> PyResult<String> {
         let p = &self.problem;
         let mut callback_error: Option<PyErr> = None;
         let out = py.allow_threads(|| {
