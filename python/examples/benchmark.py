@@ -35,7 +35,7 @@ def timed(label, workers, executor=None):
     wall = time.perf_counter() - start
     own = float(np.sum(table["seconds"]))
     overhead = (workers * wall - own) / own
-    return label, n / wall, overhead, table
+    return label, n / wall, overhead, table, own / n, own / wall
 
 
 def main():
@@ -52,7 +52,7 @@ def main():
             rows.append(timed(f"Dask LocalCluster ({WORKERS} × 1 thread)", WORKERS, client))
 
     serial = rows[0][3]
-    for label, _, _, table in rows[1:]:
+    for label, _, _, table, _, _ in rows[1:]:
         assert list(table["peak_p_plus"]) == list(serial["peak_p_plus"]), label
 
     binary = sys.argv[1] if len(sys.argv) > 1 else "target/release/wearfem"
@@ -69,12 +69,12 @@ def main():
         assert os.path.exists(os.path.join(out, "sweep.json")), proc.stderr
 
     print(f"load average after: {os.getloadavg()[0]:.1f}; mean variant {np.mean(serial['seconds']) * 1e3:.1f} ms")
-    print("| how | variants/s | vs serial | overhead per task |")
-    print("|---|---|---|---|")
+    print("| how | variants/s | vs serial | mean variant (ms) | variants at once | overhead per task |")
+    print("|---|---|---|---|---|---|")
     base = rows[0][1]
-    for label, rate, overhead, _ in rows:
-        print(f"| {label} | {rate:.1f} | {rate / base:.2f}× | {100 * overhead:.0f} % |")
-    print(f"| `wearfem sweep -j {WORKERS}` (process start and output files included) | {n / wall:.1f} | {n / wall / base:.2f}× | |")
+    for label, rate, overhead, _, mean, overlap in rows:
+        print(f"| {label} | {rate:.1f} | {rate / base:.2f}× | {1e3 * mean:.1f} | {overlap:.2f} | {100 * overhead:.0f} % |")
+    print(f"| `wearfem sweep -j {WORKERS}` (process start and output files included) | {n / wall:.1f} | {n / wall / base:.2f}× | | | |")
 
 
 # Dask starts its worker processes by re-importing this file: only run when executed.
