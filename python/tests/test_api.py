@@ -123,3 +123,14 @@ def test_steady_result_fields(punch):
     np.testing.assert_array_equal(s.p_sum, s.p_plus + s.p_minus)
     assert set(s.rigid_wear_per_period) >= {"lambda_F"}
     assert all(np.isfinite(v) for v in s.probes.values())
+
+
+def test_non_converged_steady_is_a_result_not_an_exception(punch, cli):
+    """μ = 0.4 with the pin 60 mm up: the friction moment separates the two half cycles'
+    contact zones and no steady state with one rigid wear per period exists (README,
+    Limitations). The command line exits 1 and says so; Python returns the status."""
+    sets = {"contact.friction": 0.4, "plate.pin": [1100, 160]}
+    s = punch.with_overrides(sets).steady()
+    assert not s.converged and s.status != "Solved"
+    proc, out = cli("steady", "punch-b40", "--set", "contact.friction=0.4", "--set", "plate.pin=[1100, 160]")
+    assert proc.returncode == 1 and "did not converge" in proc.stderr
