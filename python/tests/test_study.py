@@ -40,10 +40,7 @@ def test_study_rows_equal_single_solves(punch):
 
 def test_study_equals_cli_sweep(punch, cli):
     proc, out = cli("sweep", "punch-b40", "--set", "contact.friction=[0.1, 0.3]", "--set", "plate.pin=[[1100, 120], [1100, 140]]")
-    if proc.returncode != 0:
-        # Known defect of the command line (reported): sweep.svg fails on FontUnavailable
-        # after sweep.csv and sweep.json are written. Only that failure is let through.
-        assert "sweep.svg" in proc.stderr and "FontUnavailable" in proc.stderr, proc.stderr
+    assert proc.returncode == 0, proc.stderr
     rows = json.loads((out / "sweep.json").read_text())["variants"]
     table = wearfem.study(punch, {"contact.friction": [0.1, 0.3], "plate.pin": [[1100, 120], [1100, 140]]})
     assert len(rows) == len(table["status"]) == 4
