@@ -38,6 +38,30 @@
 //! | validation report | [`validate`] | [`validate::run`] |
 //!
 //! Units everywhere: mm, N, MPa (N/mm²), s.
+//!
+//! ## Load, override, run, read the profiles
+//!
+//! ```
+//! use wearfem::{driver, overrides::Override, problem::Problem};
+//!
+//! let text = wearfem::examples::example("punch-b40").unwrap(); // or std::fs::read_to_string
+//! let sets = [Override::parse("contact.friction=0.1")?, Override::parse("plate.pin=[1100, 120]")?];
+//! let problem = Problem::with_overrides(text, "punch-b40", &sets)?;
+//!
+//! // The steady worn state, directly: pressures in MPa, shape in mm, one per contact point.
+//! let (state, contact, _seconds) = driver::steady(&problem)?;
+//! let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+//! assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
+//! assert_eq!(x.len(), state.p_plus.len());
+//! // Paper eq. 23a: p⁺ + p⁻ = 2p̃ = 33.332 MPa in the steady state.
+//! assert!((state.p_plus[10] + state.p_minus[10] - 33.332).abs() < 1e-6);
+//!
+//! // Or the wear time integration, here 20 steps, with a callback after each step.
+//! let run = driver::wear(&problem, Some(20), |step| assert!(step.criterion.is_finite()))?;
+//! let summary = run.summary(&problem); // what `wearfem run` writes as summary.json
+//! assert_eq!(summary["steps"].as_array().unwrap().len(), 20);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 #![warn(missing_docs)]
 

@@ -289,6 +289,27 @@ pub fn parse_spec(
     Ok(spec)
 }
 
+/// A problem file's text with `overrides` applied, as TOML text (for `Problem.to_toml` in
+/// Python, and to save the variant of a study). Only the reading is checked here; validate the
+/// result with [`crate::problem::Problem::from_toml`].
+pub fn apply_to_text(
+    text: &str,
+    file: &str,
+    overrides: &[Override],
+) -> Result<String, ProblemError> {
+    let error = |key: &str, message: String| ProblemError {
+        file: file.into(),
+        key: key.into(),
+        message,
+    };
+    let mut table: toml::Table =
+        toml::from_str(text).map_err(|e| error("(file)", one_line(e.message())))?;
+    for o in overrides {
+        apply(&mut table, o).map_err(|m| error(&o.key, m))?;
+    }
+    toml::to_string(&table).map_err(|e| error("(file)", one_line(&e.to_string())))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -300,6 +321,23 @@ mod tests {
     fn with(sets: &[&str]) -> Result<ProblemSpec, ProblemError> {
         let o: Vec<Override> = sets.iter().map(|s| Override::parse(s).unwrap()).collect();
         parse_spec(punch(), "f.toml", &o)
+    }
+
+    #[test]
+    fn text_with_overrides_reads_as_the_overridden_spec() {
+        let o = [
+            Override::parse("contact.friction=0.4").unwrap(),
+            Override::parse("plate.pin=[1100, 120]").unwrap(),
+        ];
+        let text = apply_to_text(punch(), "f.toml", &o).unwrap();
+        let spec: ProblemSpec = toml::from_str(&text).unwrap();
+        assert_eq!(spec.contact.unwrap().friction, 0.4);
+        assert_eq!(spec.plate.unwrap().pin, Some([1100.0, 120.0]));
+        let bad = [Override::parse("bodies[7].name=x").unwrap()];
+        assert_eq!(
+            apply_to_text(punch(), "f.toml", &bad).unwrap_err().key,
+            "bodies[7].name"
+        );
     }
 
     #[test]

@@ -271,14 +271,15 @@ pub fn write_wear(
     crate::plot::wear_figures(dir, &name, run).map_err(plot_error(dir))
 }
 
-/// Write a steady state: summary.json, steady.csv, pressure.svg and shape.svg.
-pub fn write_steady(
-    dir: &Path,
+/// The summary JSON of a steady state (what `wearfem steady` writes as summary.json):
+/// status, sliding, iterations, wear residual, profiles x (mm), p_plus, p_minus, p_sum (MPa),
+/// shape (mm), rigid wear per period (mm, rad) and seconds.
+pub fn steady_summary(
     problem: &crate::problem::Problem,
     contact: &crate::contact::CondensedContact,
     state: &crate::steady::SteadyState,
     seconds: f64,
-) -> Result<(), OutputError> {
+) -> Value {
     let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
     let p_minus = (!state.p_minus.is_empty()).then_some(&state.p_minus[..]);
     let p_sum: Vec<f64> = match p_minus {
@@ -311,6 +312,20 @@ pub fn write_steady(
             s.remove("p_sum");
         }
     }
+    summary
+}
+
+/// Write a steady state: summary.json, steady.csv, pressure.svg and shape.svg.
+pub fn write_steady(
+    dir: &Path,
+    problem: &crate::problem::Problem,
+    contact: &crate::contact::CondensedContact,
+    state: &crate::steady::SteadyState,
+    seconds: f64,
+) -> Result<(), OutputError> {
+    let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+    let p_minus = (!state.p_minus.is_empty()).then_some(&state.p_minus[..]);
+    let summary = steady_summary(problem, contact, state, seconds);
     write_json(dir, "summary.json", &summary)?;
     Profiles {
         x: &x,

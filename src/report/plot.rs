@@ -38,7 +38,8 @@ pub const SIZE: (u32, u32) = (900, 560);
 
 static FONT: Once = Once::new();
 
-fn register_font() {
+/// Register the compiled-in font as "sans-serif" (once): every plot calls this first.
+pub(crate) fn register_font() {
     FONT.call_once(|| {
         let bytes: &'static [u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
         // The font is compiled in and known to parse; should it not, text is left out, not

@@ -196,6 +196,8 @@ fn plot(
     outcomes: &[Outcome],
 ) -> Result<(), String> {
     use plotters::prelude::*;
+    // Without it the text of the figure fails with FontUnavailable (no system fonts are used).
+    crate::plot::register_font();
     let e = |e: &dyn std::fmt::Display| e.to_string();
     let missing = outcomes.iter().filter(|o| !o.converged).count();
     let heading = match missing {

@@ -1,0 +1,287 @@
+//! `wearfem._wearfem`: the compiled half of the Python package.
+//!
+//! A thin shell over the library: every figure comes from `wearfem::driver`,
+//! `wearfem::output` or `wearfem::sweep`, as summary JSON text identical to what the command
+//! line writes; the Python half (`python/wearfem/__init__.py`) turns it into numpy arrays.
+//! Every computation runs with the GIL released.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use wearfem::driver::{self, JobError};
+use wearfem::overrides::Override;
+use wearfem::problem::{Problem, ProblemError};
+use wearfem::sweep::{self, Job, Variant};
+
+/// Raise `wearfem.WearfemError(file, key, message)` (defined in Python, a ValueError).
+fn problem_error(py: Python<'_>, e: &ProblemError) -> PyErr {
+    let raised = py
+        .import("wearfem")
+        .and_then(|m| m.getattr("WearfemError"))
+        .and_then(|cls| cls.call1((&e.file, &e.key, &e.message)));
+    match raised {
+        Ok(value) => PyErr::from_value(value),
+        Err(err) => err,
+    }
+}
+
+fn job_error(py: Python<'_>, e: &JobError) -> PyErr {
+    match e {
+        JobError::Problem(p) => problem_error(py, p),
+    }
+}
+
+/// A Python value (bool, int, float, str, list, tuple, dict) as a TOML value.
+fn to_toml(value: &Bound<'_, PyAny>, key: &str) -> PyResult<toml::Value> {
+    if value.is_instance_of::<PyBool>() {
+        return Ok(toml::Value::Boolean(value.extract()?));
+    }
+    if value.is_instance_of::<PyInt>() {
+        return Ok(toml::Value::Integer(value.extract()?));
+    }
+    if value.is_instance_of::<PyFloat>() {
+        return Ok(toml::Value::Float(value.extract()?));
+    }
+    if value.is_instance_of::<PyString>() {
+        return Ok(toml::Value::String(value.extract()?));
+    }
+    if value.is_instance_of::<PyList>() || value.is_instance_of::<PyTuple>() {
+        let items: PyResult<Vec<_>> = value.try_iter()?.map(|v| to_toml(&v?, key)).collect();
+        return Ok(toml::Value::Array(items?));
+    }
+    if let Ok(dict) = value.downcast::<PyDict>() {
+        let mut table = toml::Table::new();
+        for (k, v) in dict.iter() {
+            let k: String = k.extract()?;
+            let inner = format!("{key}.{k}");
+            table.insert(k, to_toml(&v, &inner)?);
+        }
+        return Ok(toml::Value::Table(table));
+    }
+    // numpy scalars and the like: integers first (`__index__`), then anything float-like.
+    if let Ok(i) = value.extract::<i64>() {
+        return Ok(toml::Value::Integer(i));
+    }
+    if let Ok(x) = value.extract::<f64>() {
+        return Ok(toml::Value::Float(x));
+    }
+    Err(PyValueError::new_err(format!(
+        "{key}: cannot be written in a problem file (type {})",
+        value.get_type().name()?
+    )))
+}
+
+/// Overrides from a Python mapping {key: value}, in its order.
+fn overrides_from(py: Python<'_>, values: &Bound<'_, PyDict>) -> PyResult<Vec<Override>> {
+    values
+        .iter()
+        .map(|(k, v)| {
+            let key: String = k.extract()?;
+            let value = to_toml(&v, &key)?;
+            Override::new(&key, value).map_err(|e| problem_error(py, &e))
+        })
+        .collect()
+}
+
+/// A validated problem: the file text, its overrides and the model built from them.
+#[pyclass(name = "Problem", module = "wearfem._wearfem", frozen)]
+struct PyProblem {
+    text: String,
+    file: String,
+    overrides: Vec<Override>,
+    problem: Problem,
+}
+
+impl PyProblem {
+    fn build(
+        py: Python<'_>,
+        text: String,
+        file: String,
+        overrides: Vec<Override>,
+    ) -> PyResult<Self> {
+        let problem = py
+            .allow_threads(|| Problem::with_overrides(&text, &file, &overrides))
+            .map_err(|e| problem_error(py, &e))?;
+        Ok(PyProblem {
+            text,
+            file,
+            overrides,
+            problem,
+        })
+    }
+}
+
+#[pymethods]
+impl PyProblem {
+    /// Parse and validate problem-file text; `file` names it in error messages.
+    #[staticmethod]
+    #[pyo3(signature = (text, file = "<string>".to_string()))]
+    fn from_toml(py: Python<'_>, text: String, file: String) -> PyResult<Self> {
+        PyProblem::build(py, text, file, Vec::new())
+    }
+
+    /// Rebuild from (text, file, [(key, TOML value text)]): pickling, for process pools.
+    #[staticmethod]
+    fn _restore(
+        py: Python<'_>,
+        text: String,
+        file: String,
+        sets: Vec<(String, String)>,
+    ) -> PyResult<Self> {
+        let overrides = sets
+            .iter()
+            .map(|(k, v)| Override::new(k, wearfem::overrides::parse_value(v)))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| problem_error(py, &e))?;
+        PyProblem::build(py, text, file, overrides)
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, PyObject)> {
+        let py = slf.py();
+        let me = slf.get();
+        let sets: Vec<(String, String)> = me
+            .overrides
+            .iter()
+            .map(|o| (o.key.clone(), o.value.to_string()))
+            .collect();
+        let restore = slf.get_type().getattr("_restore")?;
+        let args = (me.text.clone(), me.file.clone(), sets).into_pyobject(py)?;
+        Ok((restore, args.into_any().unbind()))
+    }
+
+    /// The text of built-in example `name` (None if there is none).
+    #[staticmethod]
+    fn _example_text(name: &str) -> Option<&'static str> {
+        wearfem::examples::example(name)
+    }
+
+    /// Names of the built-in examples.
+    #[staticmethod]
+    fn _example_names() -> Vec<&'static str> {
+        wearfem::examples::EXAMPLES.iter().map(|e| e.0).collect()
+    }
+
+    /// A new problem with `values` ({dotted key: value}) applied after this one's overrides.
+    fn with_overrides(&self, py: Python<'_>, values: &Bound<'_, PyDict>) -> PyResult<Self> {
+        let mut overrides = self.overrides.clone();
+        overrides.extend(overrides_from(py, values)?);
+        PyProblem::build(py, self.text.clone(), self.file.clone(), overrides)
+    }
+
+    /// The problem file with its overrides applied, as TOML text.
+    fn to_toml(&self, py: Python<'_>) -> PyResult<String> {
+        wearfem::overrides::apply_to_text(&self.text, &self.file, &self.overrides)
+            .map_err(|e| problem_error(py, &e))
+    }
+
+    /// File name (or "built-in example NAME"), as in error messages.
+    #[getter]
+    fn file(&self) -> String {
+        self.file.clone()
+    }
+
+    /// Title of the problem.
+    #[getter]
+    fn title(&self) -> String {
+        self.problem.spec.title.clone()
+    }
+
+    /// The overrides applied, as [(key, TOML value text)].
+    #[getter]
+    fn overrides(&self) -> Vec<(String, String)> {
+        self.overrides
+            .iter()
+            .map(|o| (o.key.clone(), o.value.to_string()))
+            .collect()
+    }
+
+    /// Static elastic solve: summary JSON text.
+    fn _elastic(&self, py: Python<'_>) -> PyResult<String> {
+        let p = &self.problem;
+        let out = py.allow_threads(|| driver::elastic(p));
+        out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
+    }
+
+    /// One contact solve: summary JSON text.
+    fn _contact(&self, py: Python<'_>) -> PyResult<String> {
+        let p = &self.problem;
+        let out = py.allow_threads(|| driver::contact(p).map(|r| r.0));
+        out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
+    }
+
+    /// Steady state: summary JSON text, with "probes" (name → contact point index) added.
+    fn _steady(&self, py: Python<'_>) -> PyResult<String> {
+        let p = &self.problem;
+        let out = py.allow_threads(|| {
+            driver::steady(p).map(|(state, contact, seconds)| {
+                let mut summary = wearfem::output::steady_summary(p, &contact, &state, seconds);
+                summary["probe_points"] = serde_json::json!(driver::contact_probes(p, &contact));
+                summary
+            })
+        });
+        out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
+    }
+
+    /// Wear run: summary JSON text. `progress(step, half_period)` is called after each step.
+    #[pyo3(signature = (steps = None, progress = None))]
+    fn _run(
+        &self,
+        py: Python<'_>,
+        steps: Option<usize>,
+        progress: Option<PyObject>,
+    ) -> PyResult<String> {
+        let p = &self.problem;
+        let mut callback_error: Option<PyErr> = None;
+        let out = py.allow_threads(|| {
+            driver::wear(p, steps, |s| {
+                if let (Some(f), None) = (&progress, &callback_error) {
+                    // Only the callback holds the GIL; an exception it raises is re-raised
+                    // after the run (the integration itself cannot be interrupted).
+                    Python::with_gil(|py| {
+                        if let Err(e) = f.call1(py, (s.step, s.half_period)) {
+                            callback_error = Some(e);
+                        }
+                    });
+                }
+            })
+            .map(|run| run.summary(p))
+        });
+        if let Some(e) = callback_error {
+            return Err(e);
+        }
+        out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
+    }
+
+    /// One variant of a study (`job`: "steady" or "run"): its row of `wearfem sweep`'s
+    /// sweep.json as JSON text.
+    fn _study_row(&self, py: Python<'_>, job: &str) -> PyResult<String> {
+        let job = match job {
+            "steady" => Job::Steady,
+            "run" => Job::Run,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "job must be \"steady\" or \"run\", got \"{other}\""
+                )))
+            }
+        };
+        let out = py.allow_threads(|| {
+            sweep::solve(&self.problem, job).map(|outcome| {
+                let variant = Variant {
+                    overrides: self.overrides.clone(),
+                    problem: self.problem.clone(),
+                };
+                let s = sweep::report::summary("", job, 1, &[variant], &[outcome], 0.0);
+                s["variants"][0].clone()
+            })
+        });
+        out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
+    }
+}
+
+/// The compiled module.
+#[pymodule]
+fn _wearfem(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyProblem>()?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

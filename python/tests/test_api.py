@@ -1,0 +1,136 @@
+"""The Python API: errors, overrides, round trips, pickling."""
+
+import pickle
+
+import numpy as np
+import pytest
+
+import wearfem
+
+
+@pytest.fixture(scope="module")
+def punch():
+    return wearfem.Problem.builtin("punch-b40")
+
+
+def test_bad_key_raises_with_key(punch):
+    with pytest.raises(wearfem.WearfemError) as e:
+        punch.with_overrides({"contact.frictoin": 0.3})
+    assert e.value.key == "contact.frictoin"
+    assert e.value.file == "built-in example punch-b40"
+    assert isinstance(e.value, ValueError)
+    assert str(e.value).startswith("built-in example punch-b40: contact.frictoin: ")
+
+
+def test_bad_value_type_raises_with_key(punch):
+    with pytest.raises(wearfem.ProblemError) as e:
+        punch.with_overrides({"contact.friction": "lots"})
+    assert e.value.key == "contact.friction"
+
+
+def test_broken_file_names_key(tmp_path):
+    text = wearfem.Problem.builtin("punch-b40").to_toml()
+    bad = tmp_path / "bad.toml"
+    # A negative Young's modulus: the schema reads it, validation must refuse it by key.
+    p = wearfem.Problem.from_toml(text, str(bad))
+    for key in ["materials.steel.young", "materials.punch.young"]:
+        try:
+            p.with_overrides({key: -1.0})
+        except wearfem.WearfemError as e:
+            assert e.key.startswith("materials.") and e.key.endswith("young"), e.key
+            assert e.file == str(bad)
+            break
+    else:
+        pytest.fail("no material named steel or punch in punch-b40")
+
+
+def test_missing_file():
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.Problem.from_file("/nonexistent/x.toml")
+    assert e.value.file == "/nonexistent/x.toml"
+
+
+def test_unknown_builtin():
+    with pytest.raises(wearfem.WearfemError, match="punch-b40"):
+        wearfem.Problem.builtin("punch-b41")
+
+
+def test_syntax_error_names_line():
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.Problem.from_toml("title = 'x'\n[contact\n", "broken.toml")
+    assert e.value.file == "broken.toml"
+    assert e.value.key.startswith("line ")
+
+
+def test_overrides_change_what_they_name(punch):
+    base = punch.steady()
+    low = punch.with_overrides({"contact.friction": 0.05}).steady()
+    assert base.converged and low.converged
+    # Friction tilts the punch: a different friction must change the pressure profile ...
+    assert np.max(np.abs(base.p_plus - low.p_plus)) > 1e-3 * np.max(base.p_plus)
+    # ... and the override is recorded where it was set, nothing else.
+    assert punch.with_overrides({"contact.friction": 0.05}).overrides == [("contact.friction", "0.05")]
+    assert "friction = 0.05" in punch.with_overrides({"contact.friction": 0.05}).to_toml()
+
+
+def test_override_load_scales_pressure(punch):
+    """The paper's eq. 23a: in the periodic steady state p⁺ + p⁻ = 2 p̃ at every contact
+    point, p̃ = the normal traction on the punch top (punch and top are equally wide). Set
+    the traction through an override and the summed pressure must follow it. Tolerance: the
+    steady Newton iteration stops at a relative wear residual near 1e-10; 1e-7 of p̃ leaves a
+    wide margin while any load that did not reach the model would miss by 100 %."""
+    for traction in [16.666, 40.0]:
+        s = punch.with_overrides({"bodies[0].tractions[0].normal": traction}).steady()
+        assert s.converged, s.status
+        np.testing.assert_allclose(s.p_sum, 2 * traction, rtol=1e-7)
+
+
+def test_to_toml_round_trip(punch):
+    p = punch.with_overrides({"contact.friction": 0.35})
+    q = wearfem.Problem.from_toml(p.to_toml(), "round-trip.toml")
+    np.testing.assert_array_equal(p.steady().p_plus, q.steady().p_plus)
+
+
+def test_from_dict_equals_text():
+    tomllib = pytest.importorskip("tomllib", reason="tomllib is in the standard library from Python 3.11")
+
+    text = wearfem.Problem.builtin("punch-b40").to_toml()
+    d = tomllib.loads(text)
+    a = wearfem.Problem.from_dict(d).steady()
+    b = wearfem.Problem.builtin("punch-b40").steady()
+    np.testing.assert_array_equal(a.p_plus, b.p_plus)
+    np.testing.assert_array_equal(a.shape, b.shape)
+
+
+def test_pickle_keeps_overrides(punch):
+    p = punch.with_overrides({"contact.friction": 0.1})
+    q = pickle.loads(pickle.dumps(p))
+    assert q.overrides == p.overrides
+    np.testing.assert_array_equal(p.steady().p_plus, q.steady().p_plus)
+
+
+def test_progress_exception_reraised(punch):
+    def boom(step, half_period):
+        raise RuntimeError("stop")
+
+    with pytest.raises(RuntimeError, match="stop"):
+        punch.run(steps=3, progress=boom)
+
+
+def test_steady_result_fields(punch):
+    s = punch.steady()
+    assert s.x.shape == s.p_plus.shape == s.shape.shape
+    np.testing.assert_array_equal(s.p_sum, s.p_plus + s.p_minus)
+    assert set(s.rigid_wear_per_period) >= {"lambda_F"}
+    assert all(np.isfinite(v) for v in s.probes.values())
+
+
+def test_non_converged_steady_is_a_result_not_an_exception(punch, cli):
+    """μ = 0.4 with the pin 60 mm up: the friction moment separates the two half cycles'
+    contact zones and no steady state with one rigid wear per period exists (README,
+    Limitations). The command line exits 1 and says so; Python returns the status."""
+    sets = {"contact.friction": 0.4, "plate.pin": [1100, 160]}
+    s = punch.with_overrides(sets).steady()
+    assert not s.converged and s.status != "Solved"
+    proc, out = cli("steady", "punch-b40", "--set", "contact.friction=0.4", "--set", "plate.pin=[1100, 160]")
+    assert proc.returncode == 1 and "did not converge" in proc.stderr

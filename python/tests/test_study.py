@@ -1,0 +1,94 @@
+"""Studies: serial, thread pool and Dask give the same rows, equal to `wearfem sweep`."""
+
+import concurrent.futures
+import json
+
+import numpy as np
+import pytest
+
+import wearfem
+from wearfem._study import variants
+
+RESULTS = ["status", "converged", "peak_p_plus", "peak_p_minus", "shape_range", "lambda_F_per_period"]
+
+
+@pytest.fixture(scope="module")
+def punch():
+    return wearfem.Problem.builtin("punch-b40")
+
+
+GRID = {"contact.friction": [0.1, 0.2, 0.25, 0.3], "plate.pin": [[1100, 120], [1100, 140]]}
+
+
+def test_variants_product_first_key_slowest():
+    v = variants({"a": [1, 2], "b": [3, 4, 5]})
+    assert v == [{"a": a, "b": b} for a in [1, 2] for b in [3, 4, 5]]
+    assert variants([{"a": 1}, {"b": 2}]) == [{"a": 1}, {"b": 2}]
+
+
+def test_study_rows_equal_single_solves(punch):
+    table = wearfem.study(punch, {"contact.friction": [0.1, 0.3]})
+    assert list(table["contact.friction"]) == [0.1, 0.3]
+    for i, mu in enumerate([0.1, 0.3]):
+        s = punch.with_overrides({"contact.friction": mu}).steady()
+        assert table["peak_p_plus"][i] == s.p_plus.max()
+        assert table["peak_p_minus"][i] == s.p_minus.max()
+        assert table["shape_range"][i] == s.shape.max() - s.shape.min()
+        assert table["lambda_F_per_period"][i] == s.rigid_wear_per_period["lambda_F"]
+        assert table["p_plus_M"][i] == s.probes["M"] if "M" in s.probes else True
+
+
+def test_study_equals_cli_sweep(punch, cli):
+    proc, out = cli("sweep", "punch-b40", "--set", "contact.friction=[0.1, 0.3]", "--set", "plate.pin=[[1100, 120], [1100, 140]]")
+    assert proc.returncode == 0, proc.stderr
+    rows = json.loads((out / "sweep.json").read_text())["variants"]
+    table = wearfem.study(punch, {"contact.friction": [0.1, 0.3], "plate.pin": [[1100, 120], [1100, 140]]})
+    assert len(rows) == len(table["status"]) == 4
+    for i, row in enumerate(rows):
+        assert table["peak_p_plus"][i] == row["peak_p_plus"]
+        assert table["shape_range"][i] == row["shape_range"]
+
+
+def test_bad_variant_raises_before_solving(punch):
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.study(punch, {"contact.friction": [0.2, "x"]})
+    assert e.value.key == "contact.friction"
+
+
+def test_thread_pool_equals_serial(punch):
+    serial = wearfem.study(punch, GRID)
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        threaded = wearfem.study(punch, GRID, executor=pool)
+    for k in RESULTS:
+        assert list(serial[k]) == list(threaded[k]), k
+
+
+def test_dask_local_cluster_equals_serial(punch):
+    """32 variants of punch-b40 on two worker processes: exactly the serial results."""
+    distributed = pytest.importorskip("distributed")
+    grid = {"contact.friction": list(np.linspace(0.05, 0.4, 8)), "plate.pin": [[1100, z] for z in (110, 125, 140, 160)]}
+    serial = wearfem.study(punch, grid)
+    assert len(serial["status"]) == 32
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as client:
+            on_dask = wearfem.study(punch, grid, executor=client)
+    for k in RESULTS + ["contact.friction"]:
+        a, b = list(serial[k]), list(on_dask[k])
+        # Exactly: the same library code on the same input, one thread per task.
+        assert a == b or all((x != x and y != y) or x == y for x, y in zip(a, b)), k
+
+
+def test_without_pandas_a_dict_of_arrays(punch, monkeypatch):
+    import builtins
+
+    real = builtins.__import__
+
+    def no_pandas(name, *args, **kwargs):
+        if name == "pandas":
+            raise ImportError("no pandas here")
+        return real(name, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "__import__", no_pandas)
+    table = wearfem.study(punch, {"contact.friction": [0.1, 0.2]})
+    assert isinstance(table, dict)
+    assert isinstance(table["peak_p_plus"], np.ndarray) and table["peak_p_plus"].shape == (2,)

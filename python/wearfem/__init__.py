@@ -1,0 +1,342 @@
+"""wearfem: steady sliding wear under periodic sliding, from Python.
+
+A thin layer over the Rust library ``wearfem``: every figure is computed there (the same code
+as the command line, with the GIL released) and handed over as the command line's
+``summary.json``; this module only turns its lists into numpy arrays.
+
+Units everywhere: mm, N, MPa (N/mm²), s; rigid wear per period: ``lambda_F`` in mm,
+``lambda_M`` in rad.
+
+    >>> import wearfem
+    >>> p = wearfem.Problem.builtin("punch-b40").with_overrides({"contact.friction": 0.4})
+    >>> s = p.steady()
+    >>> s.status, s.p_plus.max()   # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any, Callable, Dict, Mapping, Optional
+
+import numpy as np
+
+from ._wearfem import Problem as _Problem
+from ._wearfem import __version__
+
+__all__ = [
+    "Problem",
+    "WearfemError",
+    "ProblemError",
+    "ElasticResult",
+    "ContactResult",
+    "RunResult",
+    "SteadyResult",
+    "study",
+    "examples",
+    "__version__",
+]
+
+
+class WearfemError(ValueError):
+    """Bad input: ``file``, dotted ``key`` (``contact.friction``) and ``message``.
+
+    ``str(error)`` is the command line's message ``FILE: KEY: message``.
+    """
+
+    def __init__(self, file: str, key: str, message: str):
+        super().__init__(f"{file}: {key}: {message}")
+        self.file = file
+        self.key = key
+        self.message = message
+
+    def __reduce__(self):
+        return (type(self), (self.file, self.key, self.message))
+
+
+#: Alias: the Rust library calls this error ``ProblemError``.
+ProblemError = WearfemError
+
+
+def _array(values) -> np.ndarray:
+    """A float array from JSON numbers; JSON null (a non-finite value) becomes NaN."""
+    return np.array([np.nan if v is None else v for v in values], dtype=float)
+
+
+class _Result:
+    """Common part of the results: the summary dict and attribute access to its scalars."""
+
+    def __init__(self, summary: Dict[str, Any]):
+        #: The command line's summary.json, as a dict (lists not converted).
+        self.summary = summary
+
+    def __getitem__(self, key: str) -> Any:
+        return self.summary[key]
+
+    def __repr__(self) -> str:
+        status = getattr(self, "status", None)
+        return f"<{type(self).__name__} {self.summary.get('title', '')!r} status={status!r}>"
+
+
+class ElasticResult(_Result):
+    """Static elastic solve (``wearfem elastic``).
+
+    Attributes: ``dofs``, ``condensed_dofs``, ``strain_energy`` (N·mm), ``probes``
+    ({name: {"displacement" (mm), "stress" (MPa), "strain"}}), ``seconds`` (s).
+    """
+
+    def __init__(self, summary):
+        super().__init__(summary)
+        self.dofs: int = summary["dofs"]
+        self.condensed_dofs: int = summary["condensed_dofs"]
+        self.strain_energy: float = summary["strain_energy"]
+        self.probes: Dict[str, Any] = summary["probes"]
+        self.seconds: float = summary["seconds"]
+        self.status = "solved"
+
+
+class ContactResult(_Result):
+    """One contact solve of the initial configuration (``wearfem contact``).
+
+    Arrays, one entry per contact point in edge order: ``x``, ``z`` (mm), ``pressure`` (MPa),
+    ``gap`` (mm). Scalars: ``status`` ("solved" or "failed": a failed solve is returned, not
+    raised), ``iterations``, ``rigid`` (plate unknowns: mm, rad), ``probes`` (MPa), residuals.
+    """
+
+    def __init__(self, summary):
+        super().__init__(summary)
+        self.x = _array(summary["x"])
+        self.z = _array(summary["z"])
+        self.pressure = _array(summary["pressure"])
+        self.gap = _array(summary["gap"])
+        self.rigid: Dict[str, float] = summary["rigid"]
+        self.probes: Dict[str, float] = summary["probes"]
+        self.iterations: int = summary["iterations"]
+        self.status: str = summary["solve"]["status"]
+        self.converged: bool = self.status == "solved"
+
+
+class SteadyResult(_Result):
+    """Steady worn state computed directly (``wearfem steady``).
+
+    Arrays, one entry per contact point: ``x`` (mm), ``p_plus``, ``p_minus``, ``p_sum``
+    (MPa; ``p_minus`` and ``p_sum`` are None for monotonic sliding), ``shape`` (worn shape,
+    mm). Scalars: ``status`` ("Solved" or why not: a non-converged solve is returned with its
+    status, never raised), ``converged``, ``iterations``, ``wear_residual`` (relative),
+    ``rigid_wear_per_period`` ({"lambda_F": mm, "lambda_M": rad}), ``probes`` (p⁺ at the
+    contact point nearest to each probe, MPa), ``seconds`` (s, set-up included).
+    """
+
+    def __init__(self, summary):
+        points = summary.pop("probe_points", [])
+        super().__init__(summary)
+        self.x = _array(summary["x"])
+        self.p_plus = _array(summary["p_plus"])
+        self.p_minus = _array(summary["p_minus"]) if "p_minus" in summary else None
+        self.p_sum = _array(summary["p_sum"]) if "p_sum" in summary else None
+        self.shape = _array(summary["shape"])
+        self.status: str = summary["status"]
+        self.converged: bool = self.status == "Solved"
+        self.sliding: str = summary["sliding"]
+        self.iterations: int = summary["iterations"]
+        self.wear_residual: float = summary["wear_residual"]
+        self.rigid_wear_per_period: Dict[str, float] = summary["rigid_wear_per_period"]
+        self.seconds: float = summary["seconds"]
+        self.probes: Dict[str, float] = {name: float(self.p_plus[i]) for name, i in points}
+
+
+class RunResult(_Result):
+    """Wear time integration (``wearfem run``).
+
+    ``history``: a dict of arrays, one entry per step, ready for ``pandas.DataFrame``: step,
+    half_period, direction ("+"/"−"), k, iterations, criterion (%), dissipation (N·mm),
+    delta_w (mm, reciprocating only) and ``p_<probe>`` (MPa). Final profiles (None when the
+    run did not complete a cycle): ``x`` (mm), ``p_plus``, ``p_minus``, ``p_sum`` (MPa),
+    ``shape`` (mm). Scalars: ``status`` ("solved", or what went wrong), ``converged``,
+    ``steady_reached``, ``solves``, ``failed_solves``, ``unconverged_steps``,
+    ``sliding_distance_m`` (m), ``setup_seconds``, ``run_seconds`` (s).
+    """
+
+    def __init__(self, summary):
+        super().__init__(summary)
+        steps = summary["steps"]
+        history: Dict[str, np.ndarray] = {}
+        for name in ["step", "half_period", "k", "iterations"]:
+            history[name] = np.array([s[name] for s in steps], dtype=int)
+        history["direction"] = np.array([s["direction"] for s in steps], dtype=str)
+        for name in ["criterion", "dissipation", "delta_w"]:
+            if steps and name in steps[0]:
+                history[name] = _array([s[name] for s in steps])
+        for probe in steps[0]["probes"] if steps else []:
+            history[f"p_{probe}"] = _array([s["probes"][probe] for s in steps])
+        self.history = history
+        final = summary.get("final")
+        self.x = _array(final["x"]) if final else None
+        self.p_plus = _array(final["p_plus"]) if final else None
+        self.p_minus = _array(final["p_minus"]) if final and "p_minus" in final else None
+        self.p_sum = _array(final["p_sum"]) if final and "p_sum" in final else None
+        self.shape = _array(final["shape"]) if final else None
+        self.solves: int = summary["solves"]
+        self.failed_solves: int = summary["failed_solves"]
+        self.unconverged_steps: int = summary["unconverged_steps"]
+        self.steady_reached: Optional[bool] = summary.get("steady_reached")
+        self.sliding_distance_m: Optional[float] = summary["sliding_distance_m"]
+        self.setup_seconds: float = summary["setup_seconds"]
+        self.run_seconds: float = summary["run_seconds"]
+        problems = []
+        if self.failed_solves:
+            problems.append(f"failed solves {self.failed_solves}")
+        if self.unconverged_steps:
+            problems.append(f"unconverged steps {self.unconverged_steps}")
+        if "stop_reason" in summary:
+            problems.append(
+                f"stopped at step {summary['stopped_at_step']}: {summary['stop_reason']}"
+            )
+        self.status: str = ", ".join(problems) if problems else "solved"
+        self.converged: bool = not (self.failed_solves or self.unconverged_steps)
+
+
+class Problem:
+    """A validated problem file (TOML, see docs/problem-files.md), possibly with overrides.
+
+    Build with :meth:`from_file`, :meth:`from_toml`, :meth:`from_dict` or :meth:`builtin`;
+    bad input raises :class:`WearfemError` naming the file and the key. A problem is
+    immutable; :meth:`with_overrides` returns a new one. Problems pickle (for process pools
+    and Dask workers).
+    """
+
+    __slots__ = ("_inner",)
+
+    def __init__(self, inner: _Problem):
+        self._inner = inner
+
+    def __getstate__(self):
+        return self._inner
+
+    def __setstate__(self, inner):
+        self._inner = inner
+
+    def __repr__(self) -> str:
+        sets = ", ".join(f"{k}={v}" for k, v in self.overrides)
+        return f"<wearfem.Problem {self.file!r}{' with ' + sets if sets else ''}>"
+
+    @classmethod
+    def from_toml(cls, text: str, file: str = "<string>") -> "Problem":
+        """Parse and validate problem-file text; ``file`` names it in error messages."""
+        return cls(_Problem.from_toml(text, file))
+
+    @classmethod
+    def from_file(cls, path) -> "Problem":
+        """Read and validate the problem file at ``path``."""
+        path = str(path)
+        try:
+            with open(path, encoding="utf-8") as f:
+                text = f.read()
+        except OSError as e:
+            raise WearfemError(path, "(file)", f"cannot read: {e.strerror}") from None
+        return cls.from_toml(text, path)
+
+    @classmethod
+    def from_dict(cls, d: Mapping[str, Any], file: str = "<dict>") -> "Problem":
+        """Validate a problem given as nested dicts and lists (the TOML file's structure)."""
+        return cls.from_toml(_toml_text(d, file), file)
+
+    @classmethod
+    def builtin(cls, name: str) -> "Problem":
+        """Built-in example ``name`` (see :func:`examples`), as ``wearfem run NAME`` uses."""
+        text = _Problem._example_text(name)
+        if text is None:
+            raise WearfemError(
+                name,
+                "(name)",
+                "no built-in example of that name (examples: "
+                + ", ".join(_Problem._example_names())
+                + ")",
+            )
+        return cls.from_toml(text, f"built-in example {name}")
+
+    def with_overrides(self, values: Mapping[str, Any]) -> "Problem":
+        """A new problem with ``values`` ({dotted key: value}, the command line's ``--set``
+        keys: ``contact.friction``, ``plate.pin``, ``bodies[1].blocks[0].u``) applied, in
+        order, after this problem's own overrides. A key the schema does not know, or a
+        value of the wrong type, raises :class:`WearfemError` naming the key."""
+        return Problem(self._inner.with_overrides(dict(values)))
+
+    def to_toml(self) -> str:
+        """The problem file with its overrides applied, as TOML text."""
+        return self._inner.to_toml()
+
+    @property
+    def file(self) -> str:
+        """File name (or "built-in example NAME"), as error messages give it."""
+        return self._inner.file
+
+    @property
+    def title(self) -> str:
+        """Title of the problem."""
+        return self._inner.title
+
+    @property
+    def overrides(self) -> list:
+        """The overrides applied: [(key, value as TOML text)]."""
+        return self._inner.overrides
+
+    def elastic(self) -> ElasticResult:
+        """Static elastic solve of every body (``wearfem elastic``)."""
+        return ElasticResult(json.loads(self._inner._elastic()))
+
+    def contact(self) -> ContactResult:
+        """One contact solve of the initial configuration (``wearfem contact``)."""
+        return ContactResult(json.loads(self._inner._contact()))
+
+    def run(
+        self,
+        steps: Optional[int] = None,
+        progress: Optional[Callable[[int, int], Any]] = None,
+    ) -> RunResult:
+        """Wear time integration (``wearfem run``), ``steps`` replacing the file's duration.
+
+        ``progress(step, half_period)`` is called after every step (with the GIL held only
+        for the call); an exception it raises is re-raised when the run ends.
+        """
+        return RunResult(json.loads(self._inner._run(steps, progress)))
+
+    def steady(self, method: str = "exact") -> SteadyResult:
+        """Steady worn state computed directly (``wearfem steady``).
+
+        ``method``: "exact" (Newton on the steady-state conditions) is the only one so far.
+        A solve that does not converge is returned with its ``status``, not raised.
+        """
+        if method != "exact":
+            raise ValueError(f'method must be "exact", got {method!r}')
+        return SteadyResult(json.loads(self._inner._steady()))
+
+
+def _toml_value(v: Any, key: str, file: str) -> str:
+    """One value as inline TOML; ``key`` names it in the error for a type TOML lacks."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    if isinstance(v, (float, np.floating)):
+        x = float(v)
+        return repr(x) if np.isfinite(x) else ("nan" if np.isnan(x) else ("inf" if x > 0 else "-inf"))
+    if isinstance(v, str):
+        return json.dumps(v, ensure_ascii=False)
+    if isinstance(v, Mapping):
+        return "{ " + ", ".join(f"{json.dumps(str(k))} = {_toml_value(x, f'{key}.{k}', file)}" for k, x in v.items()) + " }"
+    if isinstance(v, (list, tuple, np.ndarray)):
+        return "[" + ", ".join(_toml_value(x, f"{key}[{i}]", file) for i, x in enumerate(v)) + "]"
+    raise WearfemError(file, key, f"cannot be written in a problem file (type {type(v).__name__})")
+
+
+def _toml_text(d: Mapping[str, Any], file: str) -> str:
+    """TOML text of nested dicts (inline tables serve every section of the schema)."""
+    return "".join(f"{json.dumps(str(k))} = {_toml_value(v, str(k), file)}\n" for k, v in d.items())
+
+
+def examples() -> list:
+    """Names of the built-in examples."""
+    return list(_Problem._example_names())
+
+
+from ._study import study  # noqa: E402

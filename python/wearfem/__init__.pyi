@@ -1,0 +1,115 @@
+"""Type stubs of wearfem. Units: mm, N, MPa, s; rigid wear λ_F in mm, λ_M in rad."""
+
+import os
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+FloatArray = npt.NDArray[np.float64]
+
+class WearfemError(ValueError):
+    """Bad input: the file, the dotted key and what is wrong."""
+
+    file: str
+    key: str
+    message: str
+    def __init__(self, file: str, key: str, message: str) -> None: ...
+
+ProblemError = WearfemError
+
+class ElasticResult:
+    summary: Dict[str, Any]
+    status: str
+    dofs: int
+    condensed_dofs: int
+    strain_energy: float  # N·mm
+    probes: Dict[str, Any]  # displacement mm, stress MPa, strain
+    seconds: float
+    def __getitem__(self, key: str) -> Any: ...
+
+class ContactResult:
+    summary: Dict[str, Any]
+    x: FloatArray  # mm
+    z: FloatArray  # mm
+    pressure: FloatArray  # MPa
+    gap: FloatArray  # mm
+    rigid: Dict[str, float]  # mm, rad
+    probes: Dict[str, float]  # MPa
+    iterations: int
+    status: str  # "solved" or "failed"
+    converged: bool
+    def __getitem__(self, key: str) -> Any: ...
+
+class SteadyResult:
+    summary: Dict[str, Any]
+    x: FloatArray  # mm
+    p_plus: FloatArray  # MPa
+    p_minus: Optional[FloatArray]  # MPa, None for monotonic sliding
+    p_sum: Optional[FloatArray]  # MPa, None for monotonic sliding
+    shape: FloatArray  # mm
+    status: str  # "Solved", or why not
+    converged: bool
+    sliding: str
+    iterations: int
+    wear_residual: float
+    rigid_wear_per_period: Dict[str, float]  # lambda_F mm, lambda_M rad
+    probes: Dict[str, float]  # p⁺ at the probes, MPa
+    seconds: float
+    def __getitem__(self, key: str) -> Any: ...
+
+class RunResult:
+    summary: Dict[str, Any]
+    history: Dict[str, np.ndarray]  # one entry per step
+    x: Optional[FloatArray]  # mm
+    p_plus: Optional[FloatArray]  # MPa
+    p_minus: Optional[FloatArray]  # MPa
+    p_sum: Optional[FloatArray]  # MPa
+    shape: Optional[FloatArray]  # mm
+    status: str
+    converged: bool
+    steady_reached: Optional[bool]
+    solves: int
+    failed_solves: int
+    unconverged_steps: int
+    sliding_distance_m: Optional[float]  # m
+    setup_seconds: float
+    run_seconds: float
+    def __getitem__(self, key: str) -> Any: ...
+
+class Problem:
+    @classmethod
+    def from_toml(cls, text: str, file: str = "<string>") -> Problem: ...
+    @classmethod
+    def from_file(cls, path: Union[str, "os.PathLike[str]"]) -> Problem: ...
+    @classmethod
+    def from_dict(cls, d: Mapping[str, Any], file: str = "<dict>") -> Problem: ...
+    @classmethod
+    def builtin(cls, name: str) -> Problem: ...
+    def with_overrides(self, values: Mapping[str, Any]) -> Problem: ...
+    def to_toml(self) -> str: ...
+    @property
+    def file(self) -> str: ...
+    @property
+    def title(self) -> str: ...
+    @property
+    def overrides(self) -> List[Tuple[str, str]]: ...
+    def elastic(self) -> ElasticResult: ...
+    def contact(self) -> ContactResult: ...
+    def run(
+        self,
+        steps: Optional[int] = None,
+        progress: Optional[Callable[[int, int], Any]] = None,
+    ) -> RunResult: ...
+    def steady(self, method: str = "exact") -> SteadyResult: ...
+
+def examples() -> List[str]: ...
+def study(
+    problem: Problem,
+    grid: Union[Mapping[str, Sequence[Any]], Sequence[Mapping[str, Any]]],
+    executor: Optional[Any] = None,
+    job: str = "steady",
+) -> Any: ...
+

@@ -1,0 +1,109 @@
+"""Parameter studies: one task per variant on any ``concurrent.futures``-style executor.
+
+Each variant is solved by the library's ``sweep::solve`` (the function behind
+``wearfem sweep``), so a row here equals the row of ``wearfem sweep`` with the same overrides,
+bit for bit, whichever executor ran it.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+from typing import Any, Dict, List, Mapping, Sequence, Union
+
+import numpy as np
+
+Grid = Union[Mapping[str, Sequence[Any]], Sequence[Mapping[str, Any]]]
+
+
+def variants(grid: Grid) -> List[Dict[str, Any]]:
+    """The override dicts of a study: the Cartesian product of a dict of lists (first key
+    slowest, as ``wearfem sweep``), or a list of override dicts taken as given."""
+    if isinstance(grid, Mapping):
+        keys = list(grid)
+        for k in keys:
+            if isinstance(grid[k], (str, bytes)) or not hasattr(grid[k], "__iter__"):
+                raise TypeError(f"grid[{k!r}] must be a list of values")
+        return [dict(zip(keys, values)) for values in itertools.product(*grid.values())]
+    return [dict(v) for v in grid]
+
+
+def solve_variant(problem, job: str = "steady") -> Dict[str, Any]:
+    """One variant's row: status, converged, peak_p_plus, peak_p_minus (MPa), p_plus_<probe>,
+    p_minus_<probe> (MPa), rigid wear per period (lambda_F mm, lambda_M rad; steady only),
+    shape_range (mm), seconds (s, this variant's own wall time). Runs with the GIL released."""
+    row = json.loads(problem._inner._study_row(job))
+    out: Dict[str, Any] = {
+        "status": row["status"],
+        "converged": row["converged"],
+        "peak_p_plus": _float(row.get("peak_p_plus")),
+        "peak_p_minus": _float(row.get("peak_p_minus")),
+    }
+    for name, value in row.get("probes_p_plus", {}).items():
+        out[f"p_plus_{name}"] = _float(value)
+    for name, value in row.get("probes_p_minus", {}).items():
+        out[f"p_minus_{name}"] = _float(value)
+    for name, value in row.get("rigid_wear_per_period", {}).items():
+        out[f"{name}_per_period"] = _float(value)
+    out["shape_range"] = _float(row.get("shape_range"))
+    out["seconds"] = row["seconds"]
+    return out
+
+
+def _float(v) -> float:
+    return np.nan if v is None else float(v)
+
+
+def study(problem, grid: Grid, executor=None, job: str = "steady"):
+    """Solve every variant of ``grid`` and tabulate the overrides and key results.
+
+    ``grid``: {key: [values]} (Cartesian product, first key slowest) or [{key: value}, …],
+    with the command line's ``--set`` keys. ``executor``: None (serial, in this thread) or
+    anything with ``submit(fn, *args)`` returning futures with ``.result()``:
+    ``concurrent.futures.ThreadPoolExecutor`` (the GIL is released while solving),
+    ``ProcessPoolExecutor``, or a ``dask.distributed.Client`` (one task per variant).
+    ``job``: "steady" (default) or "run" (the wear time integration).
+
+    Every variant is validated here before any is solved: a bad key or value raises
+    :class:`wearfem.WearfemError` naming it. A variant that does not converge is a row with
+    its ``status`` and ``converged = False``.
+
+    Returns a pandas DataFrame (one row per variant, in grid order) when pandas is installed,
+    else a dict of numpy arrays with the same columns: the override keys, then the columns of
+    :func:`solve_variant`.
+    """
+    if job not in ("steady", "run"):
+        raise ValueError(f'job must be "steady" or "run", got {job!r}')
+    sets = variants(grid)
+    problems = [problem.with_overrides(s) for s in sets]
+    if executor is None:
+        rows = [solve_variant(p, job) for p in problems]
+    else:
+        futures = [executor.submit(solve_variant, p, job) for p in problems]
+        rows = [f.result() for f in futures]
+    return _table(sets, rows)
+
+
+def _table(sets: List[Dict[str, Any]], rows: List[Dict[str, Any]]):
+    columns: Dict[str, list] = {}
+    keys = list(dict.fromkeys(k for s in sets for k in s))
+    for k in keys:
+        columns[k] = [s.get(k) for s in sets]
+    result_keys = list(dict.fromkeys(k for r in rows for k in r))
+    for k in result_keys:
+        columns[k] = [r.get(k, np.nan) for r in rows]
+    try:
+        import pandas as pd
+    except ImportError:
+        return {k: _column(v) for k, v in columns.items()}
+    return pd.DataFrame(columns)
+
+
+def _column(values: list) -> np.ndarray:
+    try:
+        return np.array(values)
+    except ValueError:
+        # Ragged values (lists of different lengths): one object per row.
+        out = np.empty(len(values), dtype=object)
+        out[:] = values
+        return out
