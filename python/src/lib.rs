@@ -28,6 +28,9 @@ fn problem_error(py: Python<'_>, e: &ProblemError) -> PyErr {
 fn job_error(py: Python<'_>, e: &JobError) -> PyErr {
     match e {
         JobError::Problem(p) => problem_error(py, p),
+        // A computation that could not be carried out at all (a contact solve failed inside
+        // one of the paper's §6 methods): nothing to return as a result.
+        JobError::Compute(message) => pyo3::exceptions::PyRuntimeError::new_err(message.clone()),
     }
 }
 
