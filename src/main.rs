@@ -354,12 +354,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             tolerance,
         } => {
             let p = load(&problem, &set)?;
-            let reciprocating = p
-                .spec
-                .wear
-                .as_ref()
-                .is_some_and(|w| w.sliding == "reciprocating");
-            if method != "exact" || reciprocating {
+            // The paper's §6 methods; `exact` keeps the direct path below (any b, either
+            // sliding, ParaView output), whose summary the Python layer reproduces.
+            if method != "exact" {
                 let settings = method_settings(&reading, &sensitivities, penalty, tolerance)?;
                 let method = SteadyMethod::parse(&method).ok_or_else(|| {
                     Failure::Input(format!(
@@ -369,6 +366,10 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 return steady_by(&p, method, settings, &out, wants_vtk(vtk, &p));
             }
             let (state, contact, seconds) = driver::steady(&p)?;
+            if state.status != wearfem::steady::SteadyStatus::Solved {
+                // Nothing from an unconverged iteration is written as a result.
+                return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written. If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
+            }
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds)?;
             if wants_vtk(vtk, &p) {
                 wearfem::vtk::write_steady(&out, &p, &state)?;
@@ -395,9 +396,6 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 driver::edge_ends_warning(&p, &driver::steady_edge_ends(&contact, &state))
             {
                 eprintln!("{w}");
-            }
-            if state.status != wearfem::steady::SteadyStatus::Solved {
-                return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); the last iterate was written. If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }
         }
         Command::Validate {

@@ -48,7 +48,9 @@ def close(a, b, path="summary"):
 
 
 def test_examples_listed():
-    assert set(STEADY) | {"lame"} == set(wearfem.examples())
+    # Every example tested here is built in (newer ones, e.g. the mortar examples, are
+    # compared by the Rust tests).
+    assert set(STEADY) | {"lame"} <= set(wearfem.examples())
 
 
 @pytest.mark.parametrize("name", STEADY)
