@@ -1,79 +1,16 @@
-"""The GIL is released while the library computes: two threads beat one on two cores.
+"""The GIL is released while the library computes.
 
-Not a speed claim (those are in docs/performance.md) but a check of `allow_threads`: with the
-GIL held, two threads take as long as one (ratio ≈ 1.0); released, ideally 0.5. Accepting
-below 0.8 leaves room for a machine shared with other work, and each side is timed best of
-three so that one disturbed run does not decide.
+This checks `allow_threads` by what other Python threads can do during a call, not by a
+speed-up: wall-clock comparisons fail on a shared CI machine (one did: 1 thread 0.269 s,
+2 threads 0.241 s with another job on the second core). The speed-up of threads and of Dask
+is measured by python/examples/benchmark.py and recorded in docs/performance.md.
 """
 
-import os
 import sys
 import threading
 import time
 
-import pytest
-
 import wearfem
-
-SOLVES = 8
-
-
-def wall(threads, problem):
-    per_thread = SOLVES // threads
-
-    def work():
-        for _ in range(per_thread):
-            problem.steady()
-
-    pool = [threading.Thread(target=work) for _ in range(threads)]
-    start = time.perf_counter()
-    for t in pool:
-        t.start()
-    for t in pool:
-        t.join()
-    return time.perf_counter() - start
-
-
-def busy_seconds():
-    """CPU seconds all processes have used so far (Linux /proc/stat), or None."""
-    try:
-        with open("/proc/stat") as f:
-            fields = f.readline().split()[1:]
-    except OSError:
-        return None
-    user, nice, system, idle, iowait, irq, softirq, steal = (int(x) for x in fields[:8])
-    return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
-
-
-def others_cores(run):
-    """Run `run()`; return (its result, cores used meanwhile by *other* processes or None)."""
-    busy0, own0, wall0 = busy_seconds(), time.process_time(), time.perf_counter()
-    result = run()
-    busy1, own1, wall1 = busy_seconds(), time.process_time(), time.perf_counter()
-    if busy0 is None:
-        return result, None
-    return result, max(0.0, (busy1 - busy0) - (own1 - own0)) / (wall1 - wall0)
-
-
-@pytest.mark.skipif((os.cpu_count() or 1) < 2, reason="needs 2 cores to run two solves at once")
-def test_two_threads_faster_than_one():
-    problem = wearfem.Problem.builtin("punch-b40")
-    problem.steady()  # warm-up (page faults, allocator)
-    one, others_one = others_cores(lambda: min(wall(1, problem) for _ in range(3)))
-    two, others_two = others_cores(lambda: min(wall(2, problem) for _ in range(3)))
-    message = f"{SOLVES} solves: 1 thread {one:.3f} s, 2 threads {two:.3f} s"
-    if two >= 0.8 * one:
-        # Two threads cannot beat one when other processes take a core; the release of the
-        # GIL is checked regardless by test_python_runs_during_a_solve below.
-        if others_two is None:
-            load = os.getloadavg()[0]
-            if load > (os.cpu_count() or 1) - 0.5:
-                pytest.skip(f"machine busy (load average {load:.1f}): {message}")
-        elif max(others_one, others_two) > 0.25:
-            pytest.skip(
-                f"other processes used {others_one:.2f} and {others_two:.2f} cores meanwhile: {message}"
-            )
-    assert two < 0.8 * one, message
 
 
 def test_python_runs_during_a_solve():
