@@ -10,8 +10,15 @@ use wearfem::driver;
 use wearfem::problem::Problem;
 
 fn main() {
-    // An optional problem file (for the cost-growth table); punch-b40 by default.
+    // An optional problem file, or `NAME@E` for a built-in punch example with E elements under
+    // the punch (the cost-growth table); punch-b40 by default.
     let p = match std::env::args().nth(1) {
+        Some(spec) if spec.contains('@') => {
+            let (name, elements) = spec.split_once('@').unwrap();
+            let text = wearfem::examples::refined_punch(name, elements.parse().unwrap())
+                .expect("a punch example and a positive number of elements");
+            Problem::from_toml(&text, &spec).unwrap()
+        }
         Some(path) => Problem::from_toml(&std::fs::read_to_string(&path).unwrap(), &path).unwrap(),
         None => Problem::from_toml(
             wearfem::examples::example("punch-b40").unwrap(),

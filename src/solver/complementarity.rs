@@ -15,8 +15,9 @@
 //! the compliance 1/(c_n w_i t) added to the diagonal: the penetration is then −p/c_n instead
 //! of zero.
 
+use crate::capacitance::Capacitance;
 use crate::contact::CondensedContact;
-use crate::dense::DenseLu;
+use crate::dense::{dot, DenseLu};
 use crate::lemke::lemke;
 
 /// Largest complementarity or equilibrium residual (relative, see [`SolveInfo`]) with which a
@@ -145,12 +146,13 @@ enum Full {
 }
 
 /// The factorisations that belong to one diagonal compliance (see
-/// [`ContactSolver::set_compliance`]): per direction the last active set's and the
-/// all-active one.
+/// [`ContactSolver::set_compliance`]): per direction the last active set's, the all-active
+/// one and its correction for a few points out of contact.
 struct Factors {
     compliance: Vec<f64>,
     cache: [Cached; 2],
     full: [Full; 2],
+    correction: [Capacitance; 2],
 }
 
 impl Factors {
@@ -159,6 +161,7 @@ impl Factors {
             compliance: compliance.to_vec(),
             cache: [Cached::empty(), Cached::empty()],
             full: [Full::Unknown, Full::Unknown],
+            correction: Default::default(),
         }
     }
 }
@@ -222,6 +225,10 @@ pub struct ContactSolver {
     rhs: Vec<f64>,
     scratch: Vec<f64>,
     index: Vec<usize>,
+    inactive: Vec<usize>,
+    /// Whether a solve may use the low-rank correction of the all-active factorisation
+    /// (cleared for the retry of a solve whose corrected result missed the residuals).
+    correct: bool,
     /// Most active-set iterations before Lemke's method takes over.
     pub max_iterations: usize,
 }
@@ -268,6 +275,8 @@ impl ContactSolver {
             rhs: Vec::with_capacity(n + m),
             scratch: vec![0.0; n + m],
             index: Vec::with_capacity(n),
+            inactive: Vec::with_capacity(n),
+            correct: true,
             max_iterations: 30 + n,
         }
     }
@@ -342,9 +351,24 @@ impl ContactSolver {
         };
         if self.method != Method::Lemke && self.active_set(gap, direction, out, &mut info) {
             info.status = Status::Solved;
-        } else {
-            self.lemke_solve(gap, direction, out, &mut info);
+            self.finish(direction, out, &mut info);
+            if info.status == Status::Solved {
+                return info;
+            }
+            // The low-rank correction can lose what the reduced system's own factorisation
+            // keeps when K is far worse conditioned than the reduced system: try without.
+            self.correct = false;
+            let direct = self.active_set(gap, direction, out, &mut info);
+            self.correct = true;
+            if direct {
+                info.status = Status::Solved;
+                self.finish(direction, out, &mut info);
+                if info.status == Status::Solved {
+                    return info;
+                }
+            }
         }
+        self.lemke_solve(gap, direction, out, &mut info);
         self.finish(direction, out, &mut info);
         info
     }
@@ -381,7 +405,7 @@ impl ContactSolver {
         out: &mut ContactSolution,
         info: &mut SolveInfo,
     ) -> bool {
-        let (n, m) = (self.n, self.m);
+        let n = self.n;
         let dir = direction.index();
         if self.factors[0].cache[dir].active.len() != n {
             self.factors[0].cache[dir].active = vec![true; n];
@@ -391,51 +415,96 @@ impl ContactSolver {
             .copy_from_slice(&self.factors[0].cache[dir].active);
         for _ in 0..self.max_iterations {
             info.iterations += 1;
-            let all_active = out.active.iter().all(|&a| a) && self.full_ready(dir);
-            let cached = &self.factors[0].cache[dir];
-            if !all_active && (!cached.valid || cached.active != out.active) {
-                let active = std::mem::take(&mut out.active);
-                self.factorise(dir, &active);
-                out.active = active;
-                info.factorisations += 1;
-                if !self.factors[0].cache[dir].valid {
-                    return false;
-                }
-            }
-            // Right-hand side [−g_A; −L] and solve.
-            self.index.clear();
-            self.index.extend((0..n).filter(|&i| out.active[i]));
-            self.rhs.clear();
-            self.rhs.extend(self.index.iter().map(|&i| -gap[i]));
-            self.rhs.extend(self.load.iter().map(|l| -l));
-            let size = self.index.len() + m;
-            let factors = &self.factors[0];
-            let lu = match &factors.full[dir] {
-                Full::Ready(full) if all_active => full,
-                _ => &factors.cache[dir].lu,
-            };
-            lu.solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
-            if self.rhs.iter().any(|v| !v.is_finite()) {
+            if !self.solve_reduced(gap, dir, out, info) {
                 return false;
             }
-            out.force.iter_mut().for_each(|f| *f = 0.0);
-            for (k, &i) in self.index.iter().enumerate() {
-                out.force[i] = self.rhs[k];
-            }
-            out.rigid.copy_from_slice(&self.rhs[self.index.len()..size]);
-            self.compute_gap(gap, dir, out);
             if !self.update_active(out) {
-                let cache = &mut self.factors[0].cache[dir];
-                cache.active.copy_from_slice(&out.active);
-                // The cached factorisation belongs to the set it was built for; when the
-                // all-active system was used instead, it no longer matches `active`.
-                if all_active {
-                    cache.valid = false;
-                }
+                self.compute_gap(gap, dir, out);
+                self.factors[0].cache[dir]
+                    .active
+                    .copy_from_slice(&out.active);
                 return true;
             }
         }
         false
+    }
+
+    /// P and λ of the reduced system of the active set `out.active`, and the gaps of the
+    /// points out of contact (the others' are zero by construction; [`Self::compute_gap`]
+    /// recomputes all of them once the set is final). False if the reduced system is
+    /// singular.
+    fn solve_reduced(
+        &mut self,
+        gap: &[f64],
+        dir: usize,
+        out: &mut ContactSolution,
+        info: &mut SolveInfo,
+    ) -> bool {
+        let (n, m) = (self.n, self.m);
+        self.inactive.clear();
+        self.inactive.extend((0..n).filter(|&i| !out.active[i]));
+        let k = self.inactive.len();
+        let full_regular = self.full_ready(dir);
+        if full_regular && (k == 0 || (self.correct && Capacitance::applies(k, n))) {
+            self.rhs.clear();
+            self.rhs.extend(gap.iter().map(|g| -g));
+            self.rhs.extend(self.load.iter().map(|l| -l));
+            let factors = &mut self.factors[0];
+            let Full::Ready(full) = &factors.full[dir] else {
+                unreachable!("full_ready said regular")
+            };
+            let solved = if k == 0 {
+                full.solve_in_place(&mut self.rhs, &mut self.scratch);
+                self.rhs.iter().all(|v| v.is_finite())
+            } else {
+                factors.correction[dir].solve(
+                    full,
+                    &self.inactive,
+                    &mut self.rhs,
+                    &mut out.gap,
+                    &mut self.scratch,
+                )
+            };
+            if solved {
+                out.force.copy_from_slice(&self.rhs[..n]);
+                out.rigid.copy_from_slice(&self.rhs[n..n + m]);
+                // The cached reduced factorisation no longer belongs to the set in use.
+                factors.cache[dir].valid = false;
+                return true;
+            }
+        }
+        let cached = &self.factors[0].cache[dir];
+        if !cached.valid || cached.active != out.active {
+            let active = std::mem::take(&mut out.active);
+            self.factorise(dir, &active);
+            out.active = active;
+            info.factorisations += 1;
+            if !self.factors[0].cache[dir].valid {
+                return false;
+            }
+        }
+        // Right-hand side [−g_A; −L] and solve.
+        self.index.clear();
+        self.index.extend((0..n).filter(|&i| out.active[i]));
+        self.rhs.clear();
+        self.rhs.extend(self.index.iter().map(|&i| -gap[i]));
+        self.rhs.extend(self.load.iter().map(|l| -l));
+        let size = self.index.len() + m;
+        self.factors[0].cache[dir]
+            .lu
+            .solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
+        if self.rhs.iter().any(|v| !v.is_finite()) {
+            return false;
+        }
+        out.force.iter_mut().for_each(|f| *f = 0.0);
+        for (k, &i) in self.index.iter().enumerate() {
+            out.force[i] = self.rhs[k];
+        }
+        out.rigid.copy_from_slice(&self.rhs[self.index.len()..size]);
+        for &i in &self.inactive {
+            out.gap[i] = self.gap_at(gap, dir, out, i);
+        }
+        true
     }
 
     /// One active-set update: keep a point whose force is not negative, add one that
@@ -474,19 +543,21 @@ impl ContactSolver {
         cache.active.extend_from_slice(active);
     }
 
-    /// d = A_s P + R λ + g (the penalty compliance excluded: d is the true gap).
+    /// d = A_s P + R λ + g at every point (the penalty compliance excluded: d is the true
+    /// gap).
     fn compute_gap(&self, gap: &[f64], dir: usize, out: &mut ContactSolution) {
-        let (n, m) = (self.n, self.m);
-        let a = &self.a[dir];
-        for i in 0..n {
-            let row = &a[i * n..(i + 1) * n];
-            let mut d = gap[i] - self.penalty_compliance[i] * out.force[i];
-            d += row.iter().zip(&out.force).map(|(x, y)| x * y).sum::<f64>();
-            for k in 0..m {
-                d += self.r[i * m + k] * out.rigid[k];
-            }
-            out.gap[i] = d;
+        for i in 0..self.n {
+            out.gap[i] = self.gap_at(gap, dir, out, i);
         }
+    }
+
+    /// d_i = (A_s P + R λ + g)_i − c_i P_i (c the penalty compliance).
+    fn gap_at(&self, gap: &[f64], dir: usize, out: &ContactSolution, i: usize) -> f64 {
+        let (n, m) = (self.n, self.m);
+        let row = &self.a[dir][i * n..(i + 1) * n];
+        gap[i] - self.penalty_compliance[i] * out.force[i]
+            + dot(row, &out.force)
+            + dot(&self.r[i * m..(i + 1) * m], &out.rigid)
     }
 
     fn lemke_solve(

@@ -7,6 +7,27 @@ use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::lu::partial_pivoting::factor::{lu_in_place, lu_in_place_scratch};
 use faer::{MatMut, Par};
 
+/// Σ a_i b_i over the shorter of the two slices, with eight partial sums so that the compiler
+/// can vectorise it (a single running sum fixes the order of the additions and cannot be).
+pub fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let n = a.len().min(b.len());
+    let (a, b) = (&a[..n], &b[..n]);
+    let mut partial = [0.0f64; 8];
+    let (a_chunks, b_chunks) = (a.chunks_exact(8), b.chunks_exact(8));
+    let tail: f64 = a_chunks
+        .remainder()
+        .iter()
+        .zip(b_chunks.remainder())
+        .map(|(x, y)| x * y)
+        .sum();
+    for (x, y) in a_chunks.zip(b_chunks) {
+        for k in 0..8 {
+            partial[k] += x[k] * y[k];
+        }
+    }
+    partial.iter().sum::<f64>() + tail
+}
+
 /// LU = PA of a square matrix given row by row.
 #[derive(Default)]
 pub struct DenseLu {
@@ -153,6 +174,17 @@ mod tests {
         lu.solve_in_place(&mut b, &mut scratch);
         for i in 0..n {
             assert!((b[i] - x[i]).abs() < 1e-13, "{i}: {} vs {}", b[i], x[i]);
+        }
+    }
+
+    #[test]
+    fn dot_sums_every_product_whatever_the_length() {
+        // Integers: exact in any order of summation.
+        for n in [0, 1, 7, 8, 9, 23] {
+            let a: Vec<f64> = (0..n).map(|i| i as f64).collect();
+            let b: Vec<f64> = (0..n).map(|i| (2 * i + 1) as f64).collect();
+            let want: f64 = (0..n).map(|i| (i * (2 * i + 1)) as f64).sum();
+            assert_eq!(dot(&a, &b), want, "n = {n}");
         }
     }
 
