@@ -59,7 +59,7 @@ fn main() {
             );
             let body = pr.elastic_body(0, &[]).unwrap();
             let load = pr.load_vector(0, &body, &[]).unwrap();
-            let u = body.solve(&load);
+            let u = body.solve(&load).unwrap();
             let energy = wearfem::fields::strain_energy(&load, &u);
             let error = ((u_exact - energy) / u_exact).max(0.0).sqrt();
             row += &format!(" {} | {error:.3e} |", body.info.total_dofs);

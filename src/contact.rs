@@ -345,7 +345,8 @@ fn flexibility(
     traces: &[Trace],
 ) -> Result<Mat<f64>, ProblemError> {
     if traces.len() < SCHUR_FROM_POINTS && std::env::var_os("WEARFEM_SCHUR").is_none() {
-        return Ok(flexibility_by_solves(body, traces));
+        return flexibility_by_solves(body, traces)
+            .map_err(|e| problem.error("bodies", e.to_string()));
     }
     body.trace_flexibility(traces)
         .map_err(|e| problem.error("contact", e.to_string()))
@@ -356,7 +357,10 @@ fn flexibility(
 pub const SCHUR_FROM_POINTS: usize = 120;
 
 /// G by one multi-right-hand-side solve with the body's factorisation.
-fn flexibility_by_solves(body: &ElasticBody, traces: &[Trace]) -> Mat<f64> {
+fn flexibility_by_solves(
+    body: &ElasticBody,
+    traces: &[Trace],
+) -> Result<Mat<f64>, crate::elasticity::ElasticityError> {
     let n = traces.len();
     let n_dofs = body.dofs.n_dofs();
     let mut rhs = Mat::<f64>::zeros(n_dofs, 2 * n);
@@ -367,15 +371,15 @@ fn flexibility_by_solves(body: &ElasticBody, traces: &[Trace]) -> Mat<f64> {
             }
         }
     }
-    body.solve_in_place(&mut rhs);
-    Mat::from_fn(2 * n, 2 * n, |r, col| {
+    body.solve_in_place(&mut rhs)?;
+    Ok(Mat::from_fn(2 * n, 2 * n, |r, col| {
         let (i, c) = (r / 2, r % 2);
         traces[i]
             .iter()
             .filter(|(g, _)| !body.is_fixed(g[c]))
             .map(|&(g, coef)| coef * rhs[(g[c], col)])
             .sum()
-    })
+    }))
 }
 
 /// Body 2's trace of every constraint, filling in the initial gaps (and, for mortar, the
@@ -532,7 +536,10 @@ impl CondensedContact {
         for (b, body, traces, sign) in [(b1, body1, &traces1, -1.0), (b2, body2, &traces2, 1.0)] {
             let load = problem.load_vector(b, body, &plate_edge)?;
             if load.iter().any(|f| *f != 0.0) {
-                let u = body.solve(&load).boundary;
+                let u = body
+                    .solve(&load)
+                    .map_err(|e| problem.error("bodies", e.to_string()))?
+                    .boundary;
                 for (i, tr) in traces.iter().enumerate() {
                     let n = points.normal[i];
                     let un: f64 = tr

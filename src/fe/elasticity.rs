@@ -1,6 +1,7 @@
 //! 2D linear elasticity with the p-version: element stiffness by tensor-product quadrature,
 //! static condensation of the internal modes, entity-block assembly and one sparse Cholesky
-//! factorisation that is kept for every later right-hand side.
+//! factorisation, made on the first solve (or taken from the Schur complement's, which has
+//! the contact trace ordered last) and kept for every later right-hand side.
 //!
 //! Element stiffness (strain vector ε = (ε_xx, ε_zz, γ_xz), σ = D ε, thickness t):
 //! K_ab = t ∫ B_aᵀ D B_b dA. With G_x[a, q] = ∂N_a/∂x · √(w_q det J_q t) (and G_z likewise) the
@@ -12,10 +13,17 @@ use crate::dofs::{DofMap, Pattern};
 use crate::material::{Analysis, Material};
 use crate::mesh::Mesh;
 use crate::quadrature::gauss_legendre;
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky,
+    SymmetricOrdering,
+};
 use faer::sparse::{SparseColMat, SymbolicSparseColMat};
-use faer::{Mat, Side};
+use faer::{Conj, Mat, Par, Side};
 use std::collections::HashMap;
+use std::sync::OnceLock;
 
 mod schur;
 
@@ -91,11 +99,47 @@ pub struct ElasticBody {
     element_type: Vec<usize>,
     types: Vec<CondensedElement>,
     fixed: Vec<bool>,
-    factor: faer::sparse::linalg::solvers::Llt<usize, f64>,
+    /// The Cholesky factorisation of `matrix`, made on first use.
+    factor: OnceLock<Factor>,
     /// The condensed stiffness matrix (N/mm), fixed rows and columns replaced by the identity.
     matrix: SparseColMat<usize, f64>,
     /// Size figures of the set-up.
     pub info: SetupInfo,
+}
+
+/// A sparse Cholesky factorisation L Lᵀ = P K Pᵀ in the ordering P it was made with.
+#[derive(Debug)]
+struct Factor {
+    symbolic: SymbolicCholesky<usize>,
+    values: Vec<f64>,
+}
+
+impl Factor {
+    /// Factorise `matrix` (lower triangle) in `ordering`; None if it is not positive definite.
+    fn new(
+        matrix: &SparseColMat<usize, f64>,
+        ordering: SymmetricOrdering<'_, usize>,
+        params: CholeskySymbolicParams<'_>,
+    ) -> Option<Factor> {
+        let symbolic =
+            factorize_symbolic_cholesky(matrix.symbolic(), Side::Lower, ordering, params).ok()?;
+        let mut values = vec![0.0; symbolic.len_val()];
+        let mut buffer = MemBuffer::new(
+            symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default()),
+        );
+        symbolic
+            .factorize_numeric_llt(
+                &mut values,
+                matrix.as_ref(),
+                Side::Lower,
+                LltRegularization::default(),
+                Par::Seq,
+                MemStack::new(&mut buffer),
+                Default::default(),
+            )
+            .ok()?;
+        Some(Factor { symbolic, values })
+    }
 }
 
 /// The displacement field of a body: global boundary dofs plus recovered internal modes.
@@ -276,11 +320,6 @@ impl ElasticBody {
         let symbolic =
             SymbolicSparseColMat::new_checked(n, n, pattern.col_ptr, None, pattern.row_idx);
         let matrix = SparseColMat::new(symbolic, values);
-        let factor = matrix
-            .sp_cholesky(Side::Lower)
-            .map_err(|_| ElasticityError::Singular {
-                body: name.to_string(),
-            })?;
         Ok(ElasticBody {
             name: name.to_string(),
             mesh,
@@ -291,15 +330,34 @@ impl ElasticBody {
             element_type,
             types,
             fixed,
-            factor,
+            factor: OnceLock::new(),
             matrix,
             info,
         })
     }
 
+    /// The factorisation of the condensed stiffness, made now if no earlier step made it.
+    fn factor(&self) -> Result<&Factor, ElasticityError> {
+        if let Some(factor) = self.factor.get() {
+            return Ok(factor);
+        }
+        let factor = Factor::new(&self.matrix, SymmetricOrdering::Amd, Default::default())
+            .ok_or_else(|| ElasticityError::Singular {
+                body: self.name.clone(),
+            })?;
+        Ok(self.factor.get_or_init(|| factor))
+    }
+
+    /// Keep `factor` (of this body's matrix, in any ordering) for later solves, unless one is
+    /// kept already.
+    fn keep_factor(&self, factor: Factor) {
+        let _ = self.factor.set(factor);
+    }
+
     /// Solve K u = f in place for every column of `rhs` (global boundary dofs, N → mm).
-    /// Entries of `rhs` at fixed dofs are ignored (set to zero).
-    pub fn solve_in_place(&self, rhs: &mut Mat<f64>) {
+    /// Entries of `rhs` at fixed dofs are ignored (set to zero). Fails only if the stiffness
+    /// is not positive definite (found by the first solve's factorisation).
+    pub fn solve_in_place(&self, rhs: &mut Mat<f64>) -> Result<(), ElasticityError> {
         for (d, &f) in self.fixed.iter().enumerate() {
             if f {
                 for c in 0..rhs.ncols() {
@@ -307,15 +365,27 @@ impl ElasticBody {
                 }
             }
         }
-        self.factor.solve_in_place(rhs.as_mut());
+        let factor = self.factor()?;
+        let mut buffer = MemBuffer::new(
+            factor
+                .symbolic
+                .solve_in_place_scratch::<f64>(rhs.ncols(), Par::Seq),
+        );
+        LltRef::new(&factor.symbolic, &factor.values).solve_in_place_with_conj(
+            Conj::No,
+            rhs.as_mut(),
+            Par::Seq,
+            MemStack::new(&mut buffer),
+        );
+        Ok(())
     }
 
     /// Displacement field for the global load vector `load` (N, one entry per global dof).
-    pub fn solve(&self, load: &[f64]) -> Displacement {
+    pub fn solve(&self, load: &[f64]) -> Result<Displacement, ElasticityError> {
         let mut rhs = Mat::from_fn(load.len(), 1, |i, _| load[i]);
-        self.solve_in_place(&mut rhs);
+        self.solve_in_place(&mut rhs)?;
         let boundary: Vec<f64> = (0..load.len()).map(|i| rhs[(i, 0)]).collect();
-        self.recover(boundary)
+        Ok(self.recover(boundary))
     }
 
     /// Recover the internal modes of every element from the boundary dofs.

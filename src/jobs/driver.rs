@@ -34,7 +34,9 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
     for b in 0..problem.spec.bodies.len() {
         let body = problem.elastic_body(b, &[])?;
         let load = problem.load_vector(b, &body, &[])?;
-        let u = body.solve(&load);
+        let u = body
+            .solve(&load)
+            .map_err(|e| problem.error("bodies", e.to_string()))?;
         energy += strain_energy(&load, &u);
         dofs += body.info.total_dofs;
         condensed += body.info.condensed_dofs;

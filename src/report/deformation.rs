@@ -172,11 +172,15 @@ pub fn contact_fields(
     }
     Ok([
         BodyField {
-            elastic: body1.solve(&load1),
+            elastic: body1
+                .solve(&load1)
+                .map_err(|e| problem.error("bodies", e.to_string()))?,
             rigid: plate_motion(contact, &solution.rigid),
         },
         BodyField {
-            elastic: body2.solve(&load2),
+            elastic: body2
+                .solve(&load2)
+                .map_err(|e| problem.error("bodies", e.to_string()))?,
             rigid: RigidMotion::default(),
         },
     ])

@@ -15,17 +15,16 @@
 //! modes of one element edge (p + 1 entries): forming Yᵀ Y with Y = L_EE⁻¹ Cᵀ densely instead
 //! would cost 3|E|³ for 2N ≈ |E| columns.
 
-use super::{ElasticBody, ElasticityError};
+use super::{ElasticBody, ElasticityError, Factor};
 use faer::dyn_stack::{MemBuffer, MemStack};
-use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::perm::PermRef;
 use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
 use faer::sparse::linalg::cholesky::{
-    factorize_symbolic_cholesky, CholeskySymbolicParams, SymbolicCholeskyRaw, SymmetricOrdering,
+    CholeskySymbolicParams, SymbolicCholeskyRaw, SymmetricOrdering,
 };
 use faer::sparse::linalg::{amd, SupernodalThreshold};
 use faer::sparse::SymbolicSparseColMat;
-use faer::{Mat, Par, Side};
+use faer::{Mat, Par};
 
 /// One point's displacement as a combination of global dofs: (x dof, z dof, coefficient).
 pub type Trace = Vec<([usize; 2], f64)>;
@@ -67,32 +66,12 @@ impl ElasticBody {
             ..Default::default()
         };
         let perm = PermRef::new_checked(&forward, &inverse, n);
-        let symbolic = factorize_symbolic_cholesky(
-            self.matrix.symbolic(),
-            Side::Lower,
-            SymmetricOrdering::Custom(perm),
-            params,
-        )
-        .map_err(|_| singular())?;
-        let mut values = vec![0.0; symbolic.len_val()];
-        let mut buffer = MemBuffer::new(
-            symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default()),
-        );
-        symbolic
-            .factorize_numeric_llt(
-                &mut values,
-                self.matrix.as_ref(),
-                Side::Lower,
-                LltRegularization::default(),
-                Par::Seq,
-                MemStack::new(&mut buffer),
-                Default::default(),
-            )
-            .map_err(|_| singular())?;
-        let SymbolicCholeskyRaw::Supernodal(supernodal) = symbolic.raw() else {
+        let whole = Factor::new(&self.matrix, SymmetricOrdering::Custom(perm), params)
+            .ok_or_else(singular)?;
+        let SymbolicCholeskyRaw::Supernodal(supernodal) = whole.symbolic.raw() else {
             return Err(singular());
         };
-        let factor = SupernodalLltRef::new(supernodal, &values);
+        let factor = SupernodalLltRef::new(supernodal, &whole.values);
         let first = n - ne;
         let mut l_ee = Mat::<f64>::zeros(ne, ne);
         for s in 0..supernodal.n_supernodes() {
@@ -118,6 +97,8 @@ impl ElasticBody {
                 }
             }
         }
+        // The factorisation serves the body's later solves too (one factorisation, not two).
+        self.keep_factor(whole);
         Ok(trace_product(&schur_inverse(l_ee), traces, |d| {
             (position[d] != usize::MAX).then(|| inverse[d] - first)
         }))
@@ -261,7 +242,7 @@ mod tests {
                 }
             }
         }
-        body.solve_in_place(&mut rhs);
+        body.solve_in_place(&mut rhs).unwrap();
         let largest = (0..2 * n)
             .flat_map(|r| (0..2 * n).map(move |c| (r, c)))
             .map(|(r, c)| schur[(r, c)].abs())

@@ -237,7 +237,9 @@ pub fn write_elastic(dir: &Path, problem: &Problem) -> Result<(), VtkError> {
         let body = problem.elastic_body(b, &[])?;
         let load = problem.load_vector(b, &body, &[])?;
         let field = BodyField {
-            elastic: body.solve(&load),
+            elastic: body
+                .solve(&load)
+                .map_err(|e| problem.error("bodies", e.to_string()))?,
             rigid: RigidMotion::default(),
         };
         bodies.push((body, field));
