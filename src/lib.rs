@@ -80,6 +80,6 @@ pub use fe::{basis, dofs, elasticity, fields, geometry, loads, material, mesh, q
 pub use input::{examples, overrides, problem, schema, wear_units};
 pub use jobs::{driver, sweep, validate};
 pub use report::{deformation, output, plot, vtk};
-pub use solver::{capacitance, complementarity, dense, lemke};
+pub use solver::{capacitance, complementarity, dense, lemke, updated_lu};
 pub use steady_state::{monotonic_shape, paper_steady, spline_method, steady};
 pub use wear::kinematics;

@@ -4,3 +4,4 @@ pub mod capacitance;
 pub mod complementarity;
 pub mod dense;
 pub mod lemke;
+pub mod updated_lu;

@@ -98,6 +98,15 @@ impl DenseLu {
         })
     }
 
+    /// The smallest |u_kk| of the factorisation (0 for an empty matrix).
+    pub fn smallest_pivot(&self) -> f64 {
+        let n = self.n;
+        (0..n)
+            .map(|k| self.lu[k * n + k].abs())
+            .reduce(f64::min)
+            .unwrap_or(0.0)
+    }
+
     /// Solve A x = b in place (b becomes x); `scratch` must have length n.
     pub fn solve_in_place(&self, b: &mut [f64], scratch: &mut [f64]) {
         let n = self.n;

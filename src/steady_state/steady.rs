@@ -17,6 +17,7 @@
 use crate::complementarity::Direction;
 use crate::contact::CondensedContact;
 use crate::dense::DenseLu;
+use crate::updated_lu::UpdatedLu;
 
 /// Settings of the steady-state solve.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -191,8 +192,9 @@ impl System<'_> {
         settings: SteadySettings,
     ) -> (SteadyStatus, usize) {
         let (n, m, halves, size) = (self.n, self.m, self.halves, self.size());
-        let mut lu = DenseLu::default();
-        let mut scratch = vec![0.0; size];
+        // For b = 1 an iteration changes only the rows of points that entered or left
+        // contact: the factorisation of an earlier iteration, corrected, solves it.
+        let mut lu = UpdatedLu::default();
         let mut rhs = vec![0.0; size];
         for iteration in 1..=settings.max_iterations {
             let mat = lu.storage(size);
@@ -263,10 +265,9 @@ impl System<'_> {
                 rhs[row] = -f;
                 row += 1;
             }
-            if !lu.factor_in_place() {
+            if lu.solve(&mut rhs).is_none() {
                 return (SteadyStatus::Singular, iteration);
             }
-            lu.solve_in_place(&mut rhs, &mut scratch);
             // A pivot can be finite and still small enough for the solve to overflow: keep the
             // last finite iterate then.
             if rhs.iter().zip(z.iter()).any(|(d, v)| !(v + d).is_finite()) {
