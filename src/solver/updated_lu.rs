@@ -154,9 +154,8 @@ impl UpdatedLu {
     fn accurate(&self, b: &[f64]) -> bool {
         let n = self.n;
         let (mut residual, mut norm) = (0.0f64, 0.0f64);
-        for r in 0..n {
-            let row = &self.matrix[r * n..(r + 1) * n];
-            residual = residual.max((dot(row, &self.y) - b[r]).abs());
+        for (row, b_r) in self.matrix.chunks_exact(n).zip(b) {
+            residual = residual.max((dot(row, &self.y) - b_r).abs());
             norm = norm.max(row.iter().map(|v| v.abs()).sum());
         }
         let x = self.y.iter().fold(0.0f64, |a, v| a.max(v.abs()));
