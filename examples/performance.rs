@@ -15,8 +15,15 @@ fn main() {
     let p = match std::env::args().nth(1) {
         Some(spec) if spec.contains('@') => {
             let (name, elements) = spec.split_once('@').unwrap();
-            let text = wearfem::examples::refined_punch(name, elements.parse().unwrap())
+            let mut text = wearfem::examples::refined_punch(name, elements.parse().unwrap())
                 .expect("a punch example and a positive number of elements");
+            // WEARFEM_ADAPTIVE=1: the adaptive schedule instead of the paper's.
+            if std::env::var_os("WEARFEM_ADAPTIVE").is_some() {
+                text = text.replace("steps = 1700 ", "steps = 100000 ").replace(
+                    "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]",
+                    "record = []\n\n[wear.adaptive]",
+                );
+            }
             Problem::from_toml(&text, &spec).unwrap()
         }
         Some(path) => Problem::from_toml(&std::fs::read_to_string(&path).unwrap(), &path).unwrap(),
