@@ -198,31 +198,43 @@ fn main() {
                 "exact",
                 SteadyMethod::Exact,
                 Sensitivities::FiniteDifference,
+                0,
             ),
             (
                 "averaged (mean)",
                 SteadyMethod::Averaged,
                 Sensitivities::FiniteDifference,
+                0,
             ),
             (
                 "spline, fd sensitivities",
                 SteadyMethod::Spline,
                 Sensitivities::FiniteDifference,
+                0,
             ),
             (
                 "spline, exact sensitivities",
                 SteadyMethod::Spline,
                 Sensitivities::Exact,
+                0,
+            ),
+            (
+                "spline, 33 points, exact sensitivities",
+                SteadyMethod::Spline,
+                Sensitivities::Exact,
+                1,
             ),
             (
                 "penalty",
                 SteadyMethod::Penalty,
                 Sensitivities::FiniteDifference,
+                0,
             ),
         ];
-        for (label, method, sensitivities) in runs {
+        for (label, method, sensitivities, spline_refinement) in runs {
             let settings = MethodSettings {
                 sensitivities,
+                spline_refinement,
                 ..Default::default()
             };
             let mut times = Vec::new();
