@@ -65,6 +65,14 @@ fn plot_axes(path: &Path, title: &str, xl: &str, yl: &str, curves: &[Curve], log
     }
 }
 
+/// "Fig. 21" for the file stem "fig21", as the paper writes it.
+fn caption(stem: &str) -> String {
+    format!(
+        "Fig. {}",
+        stem.trim_start_matches("fig").trim_start_matches('0')
+    )
+}
+
 struct Case {
     contact: CondensedContact,
     terms: Vec<(f64, f64)>,
@@ -230,13 +238,55 @@ fn main() {
             curves.push(e);
             plot(
                 &out.join(format!("{fig}{sub}.svg")),
-                &format!("{fig}{sub}: pressure during the {what}, {dir} sliding (punch-a)"),
+                &format!(
+                    "{}{sub}: pressure during the {what}, {dir} sliding (punch-a)",
+                    caption(fig)
+                ),
                 "x (mm)",
                 "p (MPa)",
                 &curves,
             );
         }
     }
+    // Fig. 22c (ours): the spline's end state near x_cl with the paper's 17 points and with
+    // every interval bisected (33 points), against the exact pressures: where the 17-point
+    // spline's 3 % error sits and that it is resolution.
+    let fine = solve_steady(
+        &a.contact,
+        &a.terms,
+        SteadyMethod::Spline,
+        MethodSettings {
+            spline_refinement: 1,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let near = |v: &[f64]| -> Vec<(f64, f64)> {
+        a.x.iter()
+            .zip(v)
+            .filter(|(x, _)| **x <= 1085.0)
+            .map(|(x, p)| (*x, *p))
+            .collect()
+    };
+    let zoom = |label: &str, v: &[f64]| Curve {
+        label: label.to_string(),
+        points: near(v),
+        dashed: false,
+    };
+    plot(
+        &out.join("fig22c.svg"),
+        "Fig. 22c (ours): spline end state near x_cl, 17 vs 33 spline points (punch-a)",
+        "x (mm)",
+        "p (MPa)",
+        &[
+            zoom("p+, 17 points (the paper's)", &spline.state.p_plus),
+            zoom("p−, 17 points (the paper's)", &spline.state.p_minus),
+            zoom("p+, 33 points", &fine.state.p_plus),
+            zoom("p−, 33 points", &fine.state.p_minus),
+            zoom("p+, exact steady state", &exact.state.p_plus),
+            zoom("p−, exact steady state", &exact.state.p_minus),
+        ],
+    );
     // Fig. 23: steady pressures.
     plot(
         &out.join("fig23.svg"),
@@ -289,21 +339,21 @@ fn main() {
         }
         plot(
             &out.join(format!("{fig}a.svg")),
-            &format!("{fig}: penalty iteration, shape ({name})"),
+            &format!("{}a: penalty iteration, shape ({name})", caption(fig)),
             "x (mm)",
             um,
             &shapes,
         );
         plot(
             &out.join(format!("{fig}b.svg")),
-            &format!("{fig}: penalty iteration, p+ ({name})"),
+            &format!("{}b: penalty iteration, p+ ({name})", caption(fig)),
             "x (mm)",
             "p+ (MPa)",
             &pressures,
         );
         plot(
             &out.join(format!("{fig}e.svg")),
-            &format!("{fig}: penalty iteration, p+ + p- ({name})"),
+            &format!("{}e: penalty iteration, p+ + p- ({name})", caption(fig)),
             "x (mm)",
             "p+ + p- (MPa)",
             &sums,
@@ -459,7 +509,7 @@ fn integration_figures(out: &Path) {
         let (r, x) = wear_run(name);
         plot(
             &out.join(format!("{fp}.svg")),
-            &format!("{fp}: contact pressure at steps n, load {label}"),
+            &format!("{}: contact pressure at steps n, load {label}", caption(fp)),
             "x (mm)",
             "p (MPa)",
             &snapshots(&r, &x, false, 1100.0),
@@ -473,14 +523,20 @@ fn integration_figures(out: &Path) {
             .collect();
         plot(
             &out.join(format!("{fp}-sum.svg")),
-            &format!("{fp}: summed pressure of the last cycle, load {label}"),
+            &format!(
+                "{}: summed pressure of the last cycle, load {label}",
+                caption(fp)
+            ),
             "x (mm)",
             "p+ + p- (MPa)",
             &[curve("p+ + p-, n = 1699–1700", &x, &sum, 1.0)],
         );
         plot(
             &out.join(format!("{fs}.svg")),
-            &format!("{fs}: shape evolution, load {label}, zero at x = 1100"),
+            &format!(
+                "{}: shape evolution, load {label}, zero at x = 1100",
+                caption(fs)
+            ),
             "x (mm)",
             um,
             &snapshots(&r, &x, true, 1100.0),

@@ -106,8 +106,8 @@ fn spline_method_reaches_the_exact_shape_and_both_sensitivities_agree() {
         // The 2 % of the shape's range is met (measured 0.86 % and 0.45 %).
         let (dp, ds) = difference(&ex, &exact);
         assert!(ds < 0.02, "{name}: Δshape {ds:.4}");
-        // The pressures are not: 17 spline points cannot follow the steady shape's curvature
-        // jump at x_cl / x_cr, where the pressures keep an error of 3–4 % of the peak
+        // The pressures are not: 17 spline points cannot follow the steady shape's abrupt
+        // change of curvature at x_cl / x_cr, where the pressures keep an error of 3–4 % of the peak
         // (measured 3.1 %, 3.6 %; the next-but-one test shows that 33 points remove it).
         assert!(dp < 0.05, "{name}: Δp {dp:.4}");
         // Finite differences (Δs = 0.00002 mm) and exact sensitivities end at the same
@@ -220,8 +220,8 @@ fn spline_error_is_its_resolution_at_the_ends_of_the_two_sided_contact_zone() {
         );
         assert!(dp1 < dp0, "{name}: 17 points {dp0:.4}, 33 points {dp1:.4}");
         // Where the 17-point spline misses: at x_cl or x_cr, where one half cycle's pressure
-        // ends and the steady shape's curvature jumps (a cubic spline is C², so it cannot
-        // follow the jump between knots 2.1 mm apart there). Within one knot spacing.
+        // rises steeply from zero and the steady shape's curvature changes abruptly (a cubic
+        // spline is C², knots 2.1 mm apart there). Within one knot spacing of x_cl or x_cr.
         let e = &exact.state;
         let x: Vec<f64> = p_x(name);
         let both: Vec<usize> = (0..x.len())

@@ -8,8 +8,8 @@
 //! all 16 columns. The paper does not name the spline's end conditions; not-a-knot ends follow
 //! the steep steady shape at the punch corners (a natural spline, with zero curvature there,
 //! left 8–9 % of the peak pressure at the corner points against 3–4 % with not-a-knot).
-//! Those 3–4 % sit at x_cl and x_cr, where one half cycle's contact ends and the steady shape's
-//! curvature is singular: the 17 points' resolution. `MethodSettings::spline_refinement`
+//! Those 3–4 % sit at x_cl and x_cr, where one half cycle's pressure rises steeply from zero
+//! and the steady shape's curvature changes abruptly: the 17 points' resolution. `MethodSettings::spline_refinement`
 //! bisects every interval between them (33 points: 0.03–0.05 %, docs/validation.md).
 
 use crate::complementarity::Direction;
