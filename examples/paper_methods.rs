@@ -84,7 +84,7 @@ fn spline_study() {
                 .unwrap();
             println!(
                 "| {name} | {} | {} | {} | {:.4} | {:.2} | {:.4} | {:.1e} |",
-                wearfem::spline_method::knot_fractions(refinement).len(),
+                wearfem::spline_method::knot_positions(refinement).len(),
                 o.state.iterations - 8,
                 o.contact_solves,
                 dp,

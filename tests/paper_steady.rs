@@ -296,3 +296,19 @@ fn penalty_iteration_count_is_set_by_the_contact_discretisation() {
         "0.9 λ_max converged"
     );
 }
+
+#[test]
+fn a_huge_spline_refinement_is_capped_at_the_contact_resolution() {
+    // Bad input must not panic or exhaust memory: u32::MAX bisections are capped at 2 (65
+    // spline points on 65 contact points), so the result equals that of refinement 2 exactly
+    // (the same computation).
+    let settings = |spline_refinement| MethodSettings {
+        sensitivities: Sensitivities::Exact,
+        spline_refinement,
+        ..Default::default()
+    };
+    let capped = solve("punch-a", SteadyMethod::Spline, settings(u32::MAX));
+    let two = solve("punch-a", SteadyMethod::Spline, settings(2));
+    assert_eq!(capped.state.shape, two.state.shape);
+    assert!(capped.state.shape.iter().all(|g| g.is_finite()));
+}

@@ -80,7 +80,8 @@ pub struct MethodSettings {
     pub fd_step: f64,
     /// Spline method: how many times every interval between the paper's 17 spline points is
     /// bisected (default 0, the paper's 17 points; 1 gives 33, 2 gives 65), for the study of
-    /// the spline's resolution at the punch corners.
+    /// the spline's resolution. Capped so that the spline has no more points than the contact
+    /// has contact points (2 with the examples' 65 points).
     pub spline_refinement: u32,
 }
 

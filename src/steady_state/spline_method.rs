@@ -101,14 +101,15 @@ pub(crate) struct SplineRun {
 /// and the zone of each contact point.
 struct Spline {
     knots: Vec<f64>,
-    /// n × 16, row-major: shape_i = Σ_j basis[i][j] a_j.
+    /// n × (knots − 1): shape_i = Σ_j basis[i][j] a_j over the free ordinates.
     basis: Vec<Vec<f64>>,
     zone: Vec<usize>,
 }
 
-/// The paper's knots (fractions of L = 60 mm) with every interval bisected `refinement` times:
-/// 17, 33, 65, … points, the middle one (held at zero) staying the middle.
-pub fn knot_fractions(refinement: u32) -> Vec<f64> {
+/// The paper's spline points (mm from the left end of its 60 mm contact; scaled to the actual
+/// contact length by the method) with every interval bisected `refinement` times: 17, 33, 65, …
+/// points, the middle one (held at zero) staying the middle.
+pub fn knot_positions(refinement: u32) -> Vec<f64> {
     let mut k = KNOTS.to_vec();
     for _ in 0..refinement {
         let mut finer = Vec::with_capacity(2 * k.len() - 1);
@@ -125,7 +126,7 @@ pub fn knot_fractions(refinement: u32) -> Vec<f64> {
 impl Spline {
     fn new(xs: &[f64], refinement: u32) -> Spline {
         let (lo, hi) = (xs[0], xs[xs.len() - 1]);
-        let fractions = knot_fractions(refinement);
+        let fractions = knot_positions(refinement);
         let knots: Vec<f64> = fractions
             .iter()
             .map(|f| lo + (hi - lo) * f / 60.0)
@@ -199,7 +200,13 @@ pub(crate) fn spline(
     settings: MethodSettings,
 ) -> Result<SplineRun, MethodError> {
     let xs: Vec<f64> = problem.contact.points.x.iter().map(|p| p[0]).collect();
-    let sp = Spline::new(&xs, settings.spline_refinement);
+    // More spline points than contact points cannot be determined by δw at the points (and a
+    // large refinement would exhaust memory): cap the refinement at the contact's resolution.
+    let refinement = (0..=settings.spline_refinement.min(16))
+        .rev()
+        .find(|&r| (16usize << r) < xs.len())
+        .unwrap_or(0);
+    let sp = Spline::new(&xs, refinement);
     let (last, mid_knot) = (sp.knots.len() - 1, sp.knots.len() / 2);
     let free: Vec<usize> = (0..sp.knots.len()).filter(|&k| k != mid_knot).collect();
     let start: Vec<f64> = free
