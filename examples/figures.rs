@@ -374,7 +374,7 @@ fn main() {
     };
     plot(
         &out.join("fig14.svg"),
-        "Fig. 14: brake, averaged monotonic shape vs steady shape",
+        "Fig. 14: brake, averaged monotonic vs steady shape (no accumulated wear)",
         "x (mm)",
         um,
         &[
