@@ -1,18 +1,19 @@
-//! Our versions of the paper's figures (Fig. 4–9, 11–25) as SVG:
+//! Our versions of the paper's figures (Fig. 4–9, 11–25) as SVG and PNG:
 //! `cargo run --release --example figures -- OUTDIR`. docs/figures.md shows them with the
-//! paper's. The plotting is here, apart from src/report/plot.rs, so that a PNG backend can be switched
-//! on for these figures alone later.
+//! paper's. The drawing is the crate's own (`wearfem::plot`, the same as `wearfem run` uses).
 
-use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 use wearfem::complementarity::{ContactSolver, Direction, Method};
 use wearfem::contact::CondensedContact;
 use wearfem::monotonic_shape::{averaged_shape, AveragedReading};
 use wearfem::paper_steady::{solve_steady, MethodOutcome, MethodSettings, SteadyMethod};
+use wearfem::plot::{write_figure, Figure, Series};
 use wearfem::problem::Problem;
 use wearfem::wear::WearIntegrator;
 
-/// One curve: legend, points, dashed or not.
+/// One curve: legend and points. `dashed` marks a reference curve (the exact steady state);
+/// the shared plotter draws every curve as a line with its own marker, so it only puts
+/// "(reference)" in the legend.
 struct Curve {
     label: String,
     points: Vec<(f64, f64)>,
@@ -27,62 +28,49 @@ fn curve(label: &str, x: &[f64], y: &[f64], scale: f64) -> Curve {
     }
 }
 
+/// Write `curves` as `path` (SVG) and its PNG twin through the crate's plotter
+/// (`wearfem::plot`, DejaVu Sans compiled in, so the PNG text needs no system fonts).
 fn plot(path: &Path, title: &str, xl: &str, yl: &str, curves: &[Curve]) {
-    let all = curves.iter().flat_map(|c| c.points.iter());
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for &(x, y) in all {
-        x0 = x0.min(x);
-        x1 = x1.max(x);
-        y0 = y0.min(y);
-        y1 = y1.max(y);
+    plot_axes(path, title, xl, yl, curves, false);
+}
+
+/// [`plot`] with a logarithmic y axis when `log_y`.
+fn plot_axes(path: &Path, title: &str, xl: &str, yl: &str, curves: &[Curve], log_y: bool) {
+    let labels: Vec<String> = curves
+        .iter()
+        .map(|c| {
+            if c.dashed {
+                format!("{} (reference)", c.label)
+            } else {
+                c.label.clone()
+            }
+        })
+        .collect();
+    let figure = Figure {
+        title: title.to_string(),
+        x_label: xl,
+        y_label: yl,
+        series: curves
+            .iter()
+            .zip(&labels)
+            .map(|(c, label)| Series {
+                label,
+                points: c.points.clone(),
+            })
+            .collect(),
+        log_y,
+    };
+    if let Err(e) = write_figure(path, &figure) {
+        panic!("{e}");
     }
-    let dy = 0.05 * (y1 - y0).max(1e-12);
-    let root = SVGBackend::new(path, (800, 520)).into_drawing_area();
-    root.fill(&WHITE).unwrap();
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x0..x1, (y0 - dy)..(y1 + dy))
-        .unwrap();
-    chart.configure_mesh().x_desc(xl).y_desc(yl).draw().unwrap();
-    let colours = [
-        BLUE,
-        RED,
-        BLACK,
-        GREEN,
-        MAGENTA,
-        CYAN,
-        RGBColor(200, 120, 0),
-        RGBColor(120, 0, 200),
-        RGBColor(120, 120, 120),
-        RGBColor(0, 130, 70),
-    ];
-    for (k, c) in curves.iter().enumerate() {
-        let colour = colours[k % colours.len()];
-        let style = colour.stroke_width(2);
-        if c.dashed {
-            chart
-                .draw_series(c.points.iter().map(|&p| Circle::new(p, 3, style)))
-                .unwrap()
-                .label(c.label.as_str())
-                .legend(move |(x, y)| Circle::new((x + 10, y), 3, style));
-        } else {
-            chart
-                .draw_series(LineSeries::new(c.points.clone(), style))
-                .unwrap()
-                .label(c.label.as_str())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
-        }
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .unwrap();
-    root.present().unwrap();
+}
+
+/// "Fig. 21" for the file stem "fig21", as the paper writes it.
+fn caption(stem: &str) -> String {
+    format!(
+        "Fig. {}",
+        stem.trim_start_matches("fig").trim_start_matches('0')
+    )
 }
 
 struct Case {
@@ -250,13 +238,55 @@ fn main() {
             curves.push(e);
             plot(
                 &out.join(format!("{fig}{sub}.svg")),
-                &format!("{fig}{sub}: pressure during the {what}, {dir} sliding (punch-a)"),
+                &format!(
+                    "{}{sub}: pressure during the {what}, {dir} sliding (punch-a)",
+                    caption(fig)
+                ),
                 "x (mm)",
                 "p (MPa)",
                 &curves,
             );
         }
     }
+    // Fig. 22c (ours): the spline's end state near x_cl with the paper's 17 points and with
+    // every interval bisected (33 points), against the exact pressures: where the 17-point
+    // spline's 3 % error sits and that it is resolution.
+    let fine = solve_steady(
+        &a.contact,
+        &a.terms,
+        SteadyMethod::Spline,
+        MethodSettings {
+            spline_refinement: 1,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let near = |v: &[f64]| -> Vec<(f64, f64)> {
+        a.x.iter()
+            .zip(v)
+            .filter(|(x, _)| **x <= 1085.0)
+            .map(|(x, p)| (*x, *p))
+            .collect()
+    };
+    let zoom = |label: &str, v: &[f64]| Curve {
+        label: label.to_string(),
+        points: near(v),
+        dashed: false,
+    };
+    plot(
+        &out.join("fig22c.svg"),
+        "Fig. 22c (ours): spline end state near x_cl, 17 vs 33 spline points (punch-a)",
+        "x (mm)",
+        "p (MPa)",
+        &[
+            zoom("p+, 17 points (the paper's)", &spline.state.p_plus),
+            zoom("p−, 17 points (the paper's)", &spline.state.p_minus),
+            zoom("p+, 33 points", &fine.state.p_plus),
+            zoom("p−, 33 points", &fine.state.p_minus),
+            zoom("p+, exact steady state", &exact.state.p_plus),
+            zoom("p−, exact steady state", &exact.state.p_minus),
+        ],
+    );
     // Fig. 23: steady pressures.
     plot(
         &out.join("fig23.svg"),
@@ -309,21 +339,21 @@ fn main() {
         }
         plot(
             &out.join(format!("{fig}a.svg")),
-            &format!("{fig}: penalty iteration, shape ({name})"),
+            &format!("{}a: penalty iteration, shape ({name})", caption(fig)),
             "x (mm)",
             um,
             &shapes,
         );
         plot(
             &out.join(format!("{fig}b.svg")),
-            &format!("{fig}: penalty iteration, p+ ({name})"),
+            &format!("{}b: penalty iteration, p+ ({name})", caption(fig)),
             "x (mm)",
             "p+ (MPa)",
             &pressures,
         );
         plot(
             &out.join(format!("{fig}e.svg")),
-            &format!("{fig}: penalty iteration, p+ + p- ({name})"),
+            &format!("{}e: penalty iteration, p+ + p- ({name})", caption(fig)),
             "x (mm)",
             "p+ + p- (MPa)",
             &sums,
@@ -344,7 +374,7 @@ fn main() {
     };
     plot(
         &out.join("fig14.svg"),
-        "Fig. 14: brake, averaged monotonic shape vs steady shape",
+        "Fig. 14: brake, averaged monotonic vs steady shape (no accumulated wear)",
         "x (mm)",
         um,
         &[
@@ -435,16 +465,17 @@ fn integration_figures(out: &Path) {
             },
         ],
     );
-    plot(
+    plot_axes(
         &out.join("fig18.svg"),
-        "Fig. 18: log10 max δw of a cycle (eq. 40, punch-a)",
+        "Fig. 18: max δw of a cycle (eq. 40, punch-a)",
         "half period n",
-        "log10 max δw (mm)",
+        "max δw (mm)",
         &[Curve {
             label: "max δw".into(),
-            points: series("−", &|s| s.delta_w.max(1e-30).log10()),
+            points: series("−", &|s| s.delta_w),
             dashed: false,
         }],
+        true,
     );
     // Fig. 5: the wear exponent b, steady states (exact method).
     let mut pressures = Vec::new();
@@ -478,7 +509,7 @@ fn integration_figures(out: &Path) {
         let (r, x) = wear_run(name);
         plot(
             &out.join(format!("{fp}.svg")),
-            &format!("{fp}: contact pressure at steps n, load {label}"),
+            &format!("{}: contact pressure at steps n, load {label}", caption(fp)),
             "x (mm)",
             "p (MPa)",
             &snapshots(&r, &x, false, 1100.0),
@@ -492,14 +523,20 @@ fn integration_figures(out: &Path) {
             .collect();
         plot(
             &out.join(format!("{fp}-sum.svg")),
-            &format!("{fp}: summed pressure of the last cycle, load {label}"),
+            &format!(
+                "{}: summed pressure of the last cycle, load {label}",
+                caption(fp)
+            ),
             "x (mm)",
             "p+ + p- (MPa)",
             &[curve("p+ + p-, n = 1699–1700", &x, &sum, 1.0)],
         );
         plot(
             &out.join(format!("{fs}.svg")),
-            &format!("{fs}: shape evolution, load {label}, zero at x = 1100"),
+            &format!(
+                "{}: shape evolution, load {label}, zero at x = 1100",
+                caption(fs)
+            ),
             "x (mm)",
             um,
             &snapshots(&r, &x, true, 1100.0),

@@ -164,3 +164,44 @@ fn brake_averaged_shape_does_not_depend_on_friction_and_overestimates_the_steady
         assert!((c - crowns[0]).abs() < 1e-9 * crowns[0].abs(), "{crowns:?}");
     }
 }
+
+#[test]
+fn brake_fig14_level_is_of_the_order_of_the_accumulated_wear_not_of_an_elastic_shape() {
+    // The paper's Fig. 14 crown values (0.07503 mm averaged, 0.07456 mm from time
+    // integration) are 50 times any elastic shape of this brake: the monotonic shapes' crown
+    // depth is below 3 µm and so is the plate's elastic approach under 10 kN.
+    let p = problem("brake", &[]);
+    let (contact, _, _) = CondensedContact::build(&p).unwrap();
+    let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
+        .unwrap()
+        .half_period_wear();
+    let avg = averaged_shape(&contact, &terms, AveragedReading::Sum).unwrap();
+    let r = contact.rigid_gap_matrix();
+    let crown = (avg.shape[avg.mid] - avg.shape[0] / r[0] * r[avg.mid]).abs();
+    assert!(crown < 0.1 * 0.07456, "averaged crown depth {crown:e} mm");
+    // The wear accumulated at the crown over the paper's run (12 100 steps, eq. 30: 120 300
+    // half periods) is of the paper's order. Theory: at the steady rate every period wears
+    // β̃ 2u₀ · 2p_m^C at the crown (eq. 35b–37, 2p_m^C = 10.4235 MPa by eq. A.15), 60 150
+    // periods. The integrated value differs by the transient (p_Σ(0) rises from 9.7 MPa to
+    // its steady value over the first ~5000 steps): 2 % bounds that.
+    let run = common::run(&p, None);
+    let c: f64 = terms.iter().map(|t| t.0).sum(); // β̃ 2u₀, mm/MPa per half period
+    let integrated: f64 = run
+        .history
+        .steps
+        .iter()
+        .map(|s| s.k as f64 * c * s.probes[0])
+        .sum();
+    let half_periods = run.history.steps.last().unwrap().half_period as f64;
+    assert_eq!(half_periods, 120_300.0);
+    let theory = c * 10.4235 * half_periods / 2.0;
+    assert!(
+        (integrated - theory).abs() < 0.02 * theory,
+        "crown wear {integrated:e} mm vs steady-rate {theory:e} mm"
+    );
+    // With the printed β̃₁ = 0.5π·10⁻⁸ that is 0.029 mm, 2.5 times below the paper's
+    // 0.0746 mm; β̃₁ = 1.25π·10⁻⁸ (Example 1's) would give 0.073 mm. Recorded, not asserted
+    // as an explanation: the bound only checks the factor between 2 and 3.
+    let ratio = 0.07456 / integrated;
+    assert!(ratio > 2.0 && ratio < 3.0, "paper / ours = {ratio}");
+}

@@ -106,9 +106,9 @@ fn spline_method_reaches_the_exact_shape_and_both_sensitivities_agree() {
         // The issue's 2 % of the shape's range is met (measured 0.86 % and 0.45 %).
         let (dp, ds) = difference(&ex, &exact);
         assert!(ds < 0.02, "{name}: Δshape {ds:.4}");
-        // The pressures are not: 17 spline points cannot follow the steady shape at the
-        // corners, where the pressures keep an error of 3–4 % of the peak (measured 3.1 %,
-        // 3.6 %). This bound records that limit, it does not excuse it.
+        // The pressures are not: 17 spline points cannot follow the steady shape's abrupt
+        // change of curvature at x_cl / x_cr, where the pressures keep an error of 3–4 % of the peak
+        // (measured 3.1 %, 3.6 %; the next-but-one test shows that 33 points remove it).
         assert!(dp < 0.05, "{name}: Δp {dp:.4}");
         // Finite differences (Δs = 0.00002 mm) and exact sensitivities end at the same
         // stationary point: the difference is the forward-difference error, O(Δs/range) ~ 1 %
@@ -194,4 +194,121 @@ fn the_papers_methods_write_the_same_keys_and_bad_options_are_refused() {
     let (code, dir) = cli(&["--method", "penalty", "--penalty", "1000"], "diverges");
     assert_eq!(code, 1);
     assert!(!dir.join("summary.json").exists());
+}
+
+#[test]
+fn spline_error_is_its_resolution_at_the_ends_of_the_two_sided_contact_zone() {
+    // With the paper's 17 spline points the pressures stay 3–4 % of the peak off the exact
+    // state (the issue asks 2 %); bisecting every interval between them (33 points) must
+    // bring both pressure and shape inside the issue's 2 %, so the residual error is the
+    // spline's resolution, not a wrong equation. Measured: 3.1 % → 0.03 % (punch-a),
+    // 3.6 % → 0.05 % (punch-b40).
+    for name in ["punch-a", "punch-b40"] {
+        let exact = solve(name, SteadyMethod::Exact, MethodSettings::default());
+        let settings = |refinement| MethodSettings {
+            sensitivities: Sensitivities::Exact,
+            spline_refinement: refinement,
+            ..Default::default()
+        };
+        let coarse = solve(name, SteadyMethod::Spline, settings(0));
+        let fine = solve(name, SteadyMethod::Spline, settings(1));
+        let (dp0, _) = difference(&coarse, &exact);
+        let (dp1, ds1) = difference(&fine, &exact);
+        assert!(
+            dp1 < 0.02 && ds1 < 0.02,
+            "{name}: 33 points Δp {dp1:.4}, Δshape {ds1:.4}"
+        );
+        assert!(dp1 < dp0, "{name}: 17 points {dp0:.4}, 33 points {dp1:.4}");
+        // Where the 17-point spline misses: at x_cl or x_cr, where one half cycle's pressure
+        // rises steeply from zero and the steady shape's curvature changes abruptly (a cubic
+        // spline is C², knots 2.1 mm apart there). Within one knot spacing of x_cl or x_cr.
+        let e = &exact.state;
+        let x: Vec<f64> = p_x(name);
+        let both: Vec<usize> = (0..x.len())
+            .filter(|&i| e.p_plus[i] > 0.0 && e.p_minus[i] > 0.0)
+            .collect();
+        let (x_cl, x_cr) = (x[both[0]], x[both[both.len() - 1]]);
+        let err = |i: usize| {
+            (coarse.state.p_plus[i] - e.p_plus[i])
+                .abs()
+                .max((coarse.state.p_minus[i] - e.p_minus[i]).abs())
+        };
+        let worst = (0..x.len())
+            .max_by(|&i, &j| err(i).total_cmp(&err(j)))
+            .unwrap();
+        let gap = (x[worst] - x_cl).abs().min((x[worst] - x_cr).abs());
+        assert!(
+            gap < 2.2,
+            "{name}: worst at x = {}, x_cl {x_cl}, x_cr {x_cr}",
+            x[worst]
+        );
+    }
+}
+
+/// x of the contact points of built-in example `name`, mm.
+fn p_x(name: &str) -> Vec<f64> {
+    let p = problem(name, &[]);
+    let (contact, _, _) = CondensedContact::build(&p).unwrap();
+    contact.points.x.iter().map(|q| q[0]).collect()
+}
+
+#[test]
+fn penalty_iteration_count_is_set_by_the_contact_discretisation() {
+    // The penalty iteration is a fixed-step descent: its stable step 1/c_n is bounded by the
+    // stiffest gap pattern of the contact (c_n ≥ λ_max of diag(1/area) A_nn⁻¹), its slowest
+    // mode by the softest, so the count grows with the number of contact points. Element
+    // order p = 4 (33 points) must need fewer periods than p = 8 (65 points); measured 517
+    // against 950 (punch-a). The paper does not print its mesh at the contact or its c_n.
+    let count = |order: &str| {
+        let p = problem("punch-a", &[("\np = 8", order)]);
+        let (contact, _, _) = CondensedContact::build(&p).unwrap();
+        let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
+            .unwrap()
+            .half_period_wear();
+        let o = solve_steady(&contact, &terms, SteadyMethod::Penalty, Default::default()).unwrap();
+        assert_eq!(o.state.status, SteadyStatus::Solved, "{order}");
+        (o.state.iterations, o.penalty_stiffness.unwrap())
+    };
+    let (coarse, c4) = count("\np = 4");
+    let (fine, c8) = count("\np = 8");
+    assert!(c4 < c8, "λ_max {c4:e} vs {c8:e}");
+    assert!(coarse < fine, "{coarse} vs {fine} periods");
+    // Below λ_max the corrections overshoot on the stiffest pattern and the iteration does
+    // not settle: 0.9 λ_max stays above the eq. 49 tolerance for 3000 periods (3 × the
+    // count at λ_max).
+    let p = problem("punch-a", &[]);
+    let (contact, _, _) = CondensedContact::build(&p).unwrap();
+    let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
+        .unwrap()
+        .half_period_wear();
+    let o = solve_steady(
+        &contact,
+        &terms,
+        SteadyMethod::Penalty,
+        MethodSettings {
+            penalty_stiffness: Some(0.9 * c8),
+            max_iterations: 3000,
+            ..Default::default()
+        },
+    );
+    assert!(
+        o.map_or(true, |o| o.state.status != SteadyStatus::Solved),
+        "0.9 λ_max converged"
+    );
+}
+
+#[test]
+fn a_huge_spline_refinement_is_capped_at_the_contact_resolution() {
+    // Bad input must not panic or exhaust memory: u32::MAX bisections are capped at 2 (65
+    // spline points on 65 contact points), so the result equals that of refinement 2 exactly
+    // (the same computation).
+    let settings = |spline_refinement| MethodSettings {
+        sensitivities: Sensitivities::Exact,
+        spline_refinement,
+        ..Default::default()
+    };
+    let capped = solve("punch-a", SteadyMethod::Spline, settings(u32::MAX));
+    let two = solve("punch-a", SteadyMethod::Spline, settings(2));
+    assert_eq!(capped.state.shape, two.state.shape);
+    assert!(capped.state.shape.iter().all(|g| g.is_finite()));
 }

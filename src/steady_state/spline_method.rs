@@ -8,6 +8,9 @@
 //! all 16 columns. The paper does not name the spline's end conditions; not-a-knot ends follow
 //! the steep steady shape at the punch corners (a natural spline, with zero curvature there,
 //! left 8–9 % of the peak pressure at the corner points against 3–4 % with not-a-knot).
+//! Those 3–4 % sit at x_cl and x_cr, where one half cycle's pressure rises steeply from zero
+//! and the steady shape's curvature changes abruptly: the 17 points' resolution. `MethodSettings::spline_refinement`
+//! bisects every interval between them (33 points: 0.03–0.05 %, docs/validation.md).
 
 use crate::complementarity::Direction;
 use crate::paper_steady::{Evaluator, IterationRecord, MethodError, MethodSettings, Sensitivities};
@@ -21,7 +24,6 @@ pub const KNOTS: [f64; 17] = [
     0.0, 0.75, 1.5, 3.63, 5.75, 7.88, 10.0, 20.0, 30.0, 43.63, 50.0, 52.13, 54.25, 56.38, 58.5,
     59.25, 60.0,
 ];
-const MID_KNOT: usize = 8;
 /// eq. 44: exponent q, step Δ (mm), steps m = 1 … 7.
 const POLY_Q: i32 = 9;
 const POLY_DELTA: f64 = 0.0004;
@@ -99,20 +101,42 @@ pub(crate) struct SplineRun {
 /// and the zone of each contact point.
 struct Spline {
     knots: Vec<f64>,
-    /// n × 16, row-major: shape_i = Σ_j basis[i][j] a_j.
+    /// n × (knots − 1): shape_i = Σ_j basis[i][j] a_j over the free ordinates.
     basis: Vec<Vec<f64>>,
     zone: Vec<usize>,
 }
 
+/// The paper's spline points (mm from the left end of its 60 mm contact; scaled to the actual
+/// contact length by the method) with every interval bisected `refinement` times: 17, 33, 65, …
+/// points, the middle one (held at zero) staying the middle.
+pub fn knot_positions(refinement: u32) -> Vec<f64> {
+    let mut k = KNOTS.to_vec();
+    for _ in 0..refinement {
+        let mut finer = Vec::with_capacity(2 * k.len() - 1);
+        for w in k.windows(2) {
+            finer.push(w[0]);
+            finer.push(0.5 * (w[0] + w[1]));
+        }
+        finer.push(k[k.len() - 1]);
+        k = finer;
+    }
+    k
+}
+
 impl Spline {
-    fn new(xs: &[f64]) -> Spline {
+    fn new(xs: &[f64], refinement: u32) -> Spline {
         let (lo, hi) = (xs[0], xs[xs.len() - 1]);
-        let knots: Vec<f64> = KNOTS.iter().map(|f| lo + (hi - lo) * f / 60.0).collect();
-        let free: Vec<usize> = (0..KNOTS.len()).filter(|&k| k != MID_KNOT).collect();
+        let fractions = knot_positions(refinement);
+        let knots: Vec<f64> = fractions
+            .iter()
+            .map(|f| lo + (hi - lo) * f / 60.0)
+            .collect();
+        let mid = knots.len() / 2;
+        let free: Vec<usize> = (0..knots.len()).filter(|&k| k != mid).collect();
         let columns: Vec<Vec<f64>> = free
             .iter()
             .map(|&k| {
-                let mut unit = vec![0.0; KNOTS.len()];
+                let mut unit = vec![0.0; knots.len()];
                 unit[k] = 1.0;
                 not_a_knot_spline(&knots, &unit, xs)
             })
@@ -176,13 +200,20 @@ pub(crate) fn spline(
     settings: MethodSettings,
 ) -> Result<SplineRun, MethodError> {
     let xs: Vec<f64> = problem.contact.points.x.iter().map(|p| p[0]).collect();
-    let sp = Spline::new(&xs);
-    let free: Vec<usize> = (0..KNOTS.len()).filter(|&k| k != MID_KNOT).collect();
+    // More spline points than contact points cannot be determined by δw at the points (and a
+    // large refinement would exhaust memory): cap the refinement at the contact's resolution.
+    let refinement = (0..=settings.spline_refinement.min(16))
+        .rev()
+        .find(|&r| (16usize << r) < xs.len())
+        .unwrap_or(0);
+    let sp = Spline::new(&xs, refinement);
+    let (last, mid_knot) = (sp.knots.len() - 1, sp.knots.len() / 2);
+    let free: Vec<usize> = (0..sp.knots.len()).filter(|&k| k != mid_knot).collect();
     let start: Vec<f64> = free
         .iter()
         .map(|&k| interpolate(&xs, averaged, sp.knots[k]))
         .collect();
-    let (mid, half) = (sp.knots[MID_KNOT], 0.5 * (sp.knots[16] - sp.knots[0]));
+    let (mid, half) = (sp.knots[mid_knot], 0.5 * (sp.knots[last] - sp.knots[0]));
     // Polynomial iteration (eq. 44): keep the m with the smallest I_δw · max δw.
     let mut history = Vec::new();
     let mut iterates = vec![(0, sp.shape(&start))];
