@@ -16,9 +16,18 @@ const BOUND: f64 = 0.005;
 
 /// Half periods at which `snapshots` (every step) first come within BOUND of the steady
 /// pressures, or None.
-fn first_within(run: &wearfem::wear::WearHistory, plus: &[f64], minus: &[f64], peak: f64) -> Option<usize> {
+fn first_within(
+    run: &wearfem::wear::WearHistory,
+    plus: &[f64],
+    minus: &[f64],
+    peak: f64,
+) -> Option<usize> {
     let worst = |a: &[f64], b: &[f64]| {
-        a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max) / peak
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max)
+            / peak
     };
     let mut last_plus: Option<f64> = None;
     for s in &run.snapshots {
@@ -38,7 +47,11 @@ fn main() {
         .skip(1)
         .map(|a| a.parse().expect("numbers of elements"))
         .collect();
-    let elements = if elements.is_empty() { vec![8, 16, 32, 64] } else { elements };
+    let elements = if elements.is_empty() {
+        vec![8, 16, 32, 64]
+    } else {
+        elements
+    };
     println!("| E | points | paper's schedule: half periods to 0.5 % (steps) | adaptive: half periods to 0.5 % (steps) | adaptive stops at: half periods (steps), distance |");
     println!("|---|---|---|---|---|");
     for e in elements {
@@ -58,13 +71,18 @@ fn main() {
         let paper = text
             .replace("steps = 1700 ", "steps = 8000 ")
             .replace(record, &all(8000));
-        let run = driver::wear(&Problem::from_toml(&paper, "paper").unwrap(), None, |_| {}).unwrap();
+        let run =
+            driver::wear(&Problem::from_toml(&paper, "paper").unwrap(), None, |_| {}).unwrap();
         let paper_reach = first_within(&run.history, &state.p_plus, &state.p_minus, peak);
         let adaptive = text
             .replace("steps = 1700 ", "steps = 4000 ")
             .replace(record, &format!("{}\n\n[wear.adaptive]", all(4000)));
-        let run = driver::wear(&Problem::from_toml(&adaptive, "adaptive").unwrap(), None, |_| {})
-            .unwrap();
+        let run = driver::wear(
+            &Problem::from_toml(&adaptive, "adaptive").unwrap(),
+            None,
+            |_| {},
+        )
+        .unwrap();
         let h = &run.history;
         let adaptive_reach = first_within(h, &state.p_plus, &state.p_minus, peak);
         let last = h.steps.last().unwrap();
