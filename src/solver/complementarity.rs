@@ -20,6 +20,9 @@ use crate::contact::CondensedContact;
 use crate::dense::{dot, DenseLu};
 use crate::lemke::lemke;
 
+mod types;
+pub use types::{ContactSolution, Direction, Method, SolveInfo, Status};
+
 /// Largest complementarity or equilibrium residual (relative, see [`SolveInfo`]) with which a
 /// solve counts as [`Status::Solved`]. Exact solves reach 1e-13 or better on the paper's
 /// mesh; the flexibility's condition number grows with refinement, and at 1025 contact points
@@ -27,100 +30,6 @@ use crate::lemke::lemke;
 /// wear compliance. A wrong active set leaves a residual of order one, so 1e-6 still tells
 /// the two apart by orders of magnitude.
 pub const ACCEPTED_RESIDUAL: f64 = 1e-6;
-
-/// How the complementarity problem is solved.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Method {
-    /// Active set with Lemke fallback (exact).
-    ActiveSet,
-    /// Lemke's method only (exact, slower).
-    Lemke,
-    /// Penalty regularisation with normal stiffness c_n (MPa/mm), solved exactly.
-    Penalty {
-        /// c_n, MPa/mm.
-        stiffness: f64,
-    },
-}
-
-/// Sliding direction of a half cycle: friction on body 1 is s μ p τ with s = ±1.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Direction {
-    /// s = +1.
-    Plus,
-    /// s = −1.
-    Minus,
-}
-
-impl Direction {
-    /// s = ±1.
-    pub fn sign(self) -> f64 {
-        match self {
-            Direction::Plus => 1.0,
-            Direction::Minus => -1.0,
-        }
-    }
-    /// The other direction.
-    pub fn reversed(self) -> Direction {
-        match self {
-            Direction::Plus => Direction::Minus,
-            Direction::Minus => Direction::Plus,
-        }
-    }
-    /// "+" or "−" (U+2212, the minus sign of the issue and the paper).
-    pub fn symbol(self) -> &'static str {
-        match self {
-            Direction::Plus => "+",
-            Direction::Minus => "−",
-        }
-    }
-    fn index(self) -> usize {
-        match self {
-            Direction::Plus => 0,
-            Direction::Minus => 1,
-        }
-    }
-}
-
-/// Outcome of a solve.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Status {
-    /// Converged: residuals at round-off.
-    Solved,
-    /// Neither the active set nor Lemke's method found a solution; the last iterate is kept.
-    Failed,
-}
-
-/// What a solve did and how well.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SolveInfo {
-    /// Solved or failed.
-    pub status: Status,
-    /// Active-set iterations (reduced-system solves).
-    pub iterations: usize,
-    /// Factorisations of the reduced system.
-    pub factorisations: usize,
-    /// Pivots of Lemke's method (0 if not used).
-    pub lemke_pivots: usize,
-    /// max_i |min(p_i, d_i/(A_ii w_i t))| / max p: complementarity in units of the peak pressure.
-    pub complementarity: f64,
-    /// |E P + L|∞ relative to the load: equilibrium of the plate.
-    pub equilibrium: f64,
-}
-
-/// Pressures, gaps and rigid-body motion of one solve.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct ContactSolution {
-    /// Contact pressure p_i, MPa.
-    pub pressure: Vec<f64>,
-    /// Contact force P_i = p_i w_i t, N.
-    pub force: Vec<f64>,
-    /// Gap d_i after deformation, mm (negative = penetration, penalty method only).
-    pub gap: Vec<f64>,
-    /// Rigid plate unknowns λ (λ_F mm downwards, λ_M rad about +y).
-    pub rigid: Vec<f64>,
-    /// Points in contact.
-    pub active: Vec<bool>,
-}
 
 struct Cached {
     active: Vec<bool>,
@@ -658,47 +567,4 @@ impl ContactSolver {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::problem::Problem;
-
-    #[test]
-    fn the_low_rank_route_equals_the_reduced_systems_own_factorisation() {
-        // punch-b40 with its two ends lifted by a smooth gap, so that a few points (but under
-        // a third) leave contact: the corrected all-active factorisation and the reduced
-        // system's own factorisation solve the same equations, so they agree to round-off
-        // (1e-9 of the peak leaves the flexibility's condition number, about 1e5, room).
-        let problem =
-            Problem::from_toml(crate::examples::example("punch-b40").unwrap(), "b40").unwrap();
-        let (contact, _, _) = CondensedContact::build(&problem).unwrap();
-        let gap: Vec<f64> = contact
-            .points
-            .x
-            .iter()
-            .zip(&contact.points.initial_gap)
-            .map(|(x, g)| g + 2e-3 * ((x[0] - 1100.0) / 30.0).powi(8))
-            .collect();
-        let mut routes = Vec::new();
-        for correct in [true, false] {
-            let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
-            solver.correct = correct;
-            for direction in [Direction::Plus, Direction::Minus] {
-                let (solution, info) = solver.solve(&gap, direction);
-                assert_eq!(info.status, Status::Solved);
-                routes.push(solution);
-            }
-        }
-        let out = routes[0].active.iter().filter(|a| !**a).count();
-        assert!(
-            out > 0 && Capacitance::applies(out, contact.len()),
-            "{out} points out of contact: the case must use the correction"
-        );
-        for (corrected, direct) in routes[..2].iter().zip(&routes[2..]) {
-            assert_eq!(corrected.active, direct.active);
-            let peak = direct.pressure.iter().fold(0.0f64, |a, p| a.max(p.abs()));
-            for (a, b) in corrected.pressure.iter().zip(&direct.pressure) {
-                assert!((a - b).abs() < 1e-9 * peak, "{a} vs {b}");
-            }
-        }
-    }
-}
+mod tests;
