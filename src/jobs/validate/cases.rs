@@ -123,7 +123,10 @@ pub fn elastic(checks: &mut Checks) -> Outcome {
 /// steel, F = 38.825 · 40 N/mm: peak pressure p₀ = 2F/(π a) and half-width a = √(4 F R / (π E*)).
 pub fn hertz(checks: &mut Checks) -> Outcome {
     for kind in ["plane_strain", "plane_stress"] {
-        let pr = problem("hertz", &[("kind = \"plane_strain\"", &format!("kind = \"{kind}\""))])?;
+        let pr = problem(
+            "hertz",
+            &[("kind = \"plane_strain\"", &format!("kind = \"{kind}\""))],
+        )?;
         let (contact, _, _) = CondensedContact::build(&pr).map_err(|e| fail("hertz", e))?;
         let (sol, info) = ContactSolver::new(&contact, Method::ActiveSet)
             .solve(&contact.points.initial_gap, Direction::Plus);
