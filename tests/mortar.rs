@@ -547,3 +547,28 @@ fn punch_on_an_even_strip_converges_to_the_matched_mesh() {
         );
     }
 }
+
+/// The pin example's first contact (Hertzian, a ≈ 4.6 mm) on a flat meshed independently but
+/// not coarser than the pin (1.31 mm against 1.05 mm): no ripple. The issue found 70.1 → 37.4
+/// MPa between neighbouring points with collocation, and 16 flat elements of 5 mm, whose lines
+/// at 0 and ±5 mm put the contact edges inside flat elements, rippled by 5.3 % with mortar.
+#[test]
+fn pin_first_contact_is_smooth() {
+    let text = wearfem::examples::example("pin").unwrap();
+    let (contact, sol) = solve(&Problem::from_toml(text, "pin").unwrap());
+    let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
+    let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+    let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * peak);
+    // 1 %: the issue's bound for Hertz (0.17 % here).
+    assert!(
+        osc < 0.01 * peak,
+        "oscillation {osc:.3} MPa, peak {peak:.3}"
+    );
+    let coarse = [Override::parse("bodies[1].blocks[0].u=16").unwrap()];
+    let (_, sol) = solve(&Problem::with_overrides(text, "pin", &coarse).unwrap());
+    let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * peak);
+    assert!(
+        osc > 0.02 * peak,
+        "5 mm flat: oscillation only {osc:.3} MPa"
+    );
+}
