@@ -1,6 +1,7 @@
-//! Mortar contact on meshes made independently: Hertz line contact against the closed form,
-//! the contact patch test, and the flat punch with an evenly spaced strip against the matched
-//! mesh.
+//! Mortar contact on meshes made independently: Hertz line contact against the closed form
+//! (and where a coarse partner's own discretisation ripples the pressure), the contact patch
+//! test, the flat punch with an evenly spaced strip against the matched mesh (and its
+//! convergence as the strip is refined), and the pin example's first contact.
 
 use wearfem::complementarity::{ContactSolution, ContactSolver, Direction, Method, Status};
 use wearfem::contact::CondensedContact;
