@@ -3,6 +3,7 @@
 
 use wearfem::complementarity::{ContactSolver, Direction, Method, Status};
 use wearfem::contact::CondensedContact;
+use wearfem::overrides::Override;
 use wearfem::problem::Problem;
 
 fn example(name: &str) -> Problem {
@@ -157,62 +158,13 @@ fn lemke_and_active_set_agree() {
     }
 }
 
-/// A flat-bottomed block with a circular initial gap of radius R pressed on a large block.
-fn hertz_problem(kind: &str) -> String {
-    format!(
-        r#"
-[analysis]
-kind = "{kind}"
-thickness = 1.0
-p = 8
-
-[materials.steel]
-young = 2.0e5
-poisson = 0.3
-
-[[bodies]]
-name = "cylinder"
-[[bodies.blocks]]
-corners = [[-20.0, 0.0], [20.0, 0.0], [20.0, 40.0], [-20.0, 40.0]]
-# x = -20, -12, -6, -5, …, 5, 6, 12, 20
-u = [0.0, 0.2, 0.35, 0.375, 0.4, 0.425, 0.45, 0.475, 0.5, 0.525, 0.55, 0.575, 0.6, 0.625, 0.65, 0.8, 1.0]
-v = [0.0, 0.05, 0.15, 0.35, 1.0]
-material = "steel"
-names = {{ bottom = "contact", top = "top" }}
-[[bodies.tractions]]
-edge = "top"
-normal = 38.825
-
-[[bodies]]
-name = "block"
-[[bodies.blocks]]
-corners = [[-100.0, -100.0], [100.0, -100.0], [100.0, 0.0], [-100.0, 0.0]]
-u = [0.0, 0.25, 0.4, 0.44, 0.47, 0.48, 0.49, 0.5, 0.51, 0.52, 0.53, 0.56, 0.6, 0.75, 1.0]
-v = [0.0, 0.5, 0.8, 0.92, 0.98, 1.0]
-material = "steel"
-names = {{ bottom = "base", top = "surface" }}
-[[bodies.supports]]
-edge = "base"
-fix = ["x", "z"]
-
-[contact]
-body = "cylinder"
-edge = "contact"
-target_body = "block"
-target_edge = "surface"
-initial_shape = {{ radius = 500.0, center_x = 0.0 }}
-
-[plate]
-edge = "top"
-motion = "vertical"
-"#
-    )
-}
-
 #[test]
 fn hertz_line_contact() {
     for kind in ["plane_strain", "plane_stress"] {
-        let problem = Problem::from_toml(&hertz_problem(kind), "hertz").unwrap();
+        // The built-in example `hertz` (plane strain) in either idealisation.
+        let kind_set = Override::parse(&format!("analysis.kind={kind}")).unwrap();
+        let text = wearfem::examples::example("hertz").unwrap();
+        let problem = Problem::with_overrides(text, "hertz", &[kind_set]).unwrap();
         let (contact, _, _) = CondensedContact::build(&problem).unwrap();
         let (sol, info) = ContactSolver::new(&contact, Method::ActiveSet)
             .solve(&contact.points.initial_gap, Direction::Plus);

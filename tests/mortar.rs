@@ -1,9 +1,11 @@
-//! Mortar contact on meshes made independently: Hertz line contact against the closed form,
-//! the contact patch test, and the flat punch with an evenly spaced strip against the matched
-//! mesh.
+//! Mortar contact on meshes made independently: Hertz line contact against the closed form
+//! (and where a coarse partner's own discretisation ripples the pressure), the contact patch
+//! test, the flat punch with an evenly spaced strip against the matched mesh (and its
+//! convergence as the strip is refined), and the pin example's first contact.
 
 use wearfem::complementarity::{ContactSolution, ContactSolver, Direction, Method, Status};
 use wearfem::contact::CondensedContact;
+use wearfem::overrides::Override;
 use wearfem::problem::Problem;
 
 /// Mesh lines (as fractions of [lo, hi]) with cells of `h` mm over [−span, span] shifted by
@@ -31,60 +33,42 @@ fn lines(lo: f64, hi: f64, h: f64, span: f64, offset: f64, outer: &[f64]) -> Str
     format!("[{}]", f.join(", "))
 }
 
-/// Hertz: a block of 1 mm elements near x = 0 with a circular initial gap of radius 500 mm,
-/// pressed on a large block whose elements near x = 0 are `h2` mm wide, shifted by 0.37 mm.
-fn hertz(kind: &str, h1: f64, h2: f64, discretisation: &str) -> Problem {
+/// The built-in example `hertz` (plane strain or stress) with both blocks remeshed near the
+/// contact: body 1 with `h1` mm elements for |x| < 5 mm, body 2 with `h2` mm elements for
+/// |x| < 13 mm whose lines are shifted by `shift` mm.
+fn hertz(kind: &str, h1: f64, h2: f64, shift: f64, discretisation: &str) -> Problem {
     let u1 = lines(-20.0, 20.0, h1, 5.0, 0.0, &[-12.0, -7.0, 7.0, 12.0]);
-    let u2 = lines(-100.0, 100.0, h2, 13.0, 0.37, &[-50.0, -25.0, 25.0, 50.0]);
-    let text = format!(
-        r#"
-[analysis]
-kind = "{kind}"
-thickness = 1.0
-p = 8
+    let u2 = lines(-100.0, 100.0, h2, 13.0, shift, &[-50.0, -25.0, 25.0, 50.0]);
+    let sets = [
+        format!("analysis.kind={kind}"),
+        format!("bodies[0].blocks[0].u={u1}"),
+        format!("bodies[1].blocks[0].u={u2}"),
+        format!("contact.discretisation={discretisation}"),
+    ];
+    example_hertz(&sets)
+}
 
-[materials.steel]
-young = 2.0e5
-poisson = 0.3
+/// The built-in example `hertz` with `sets` (KEY=VALUE) applied.
+fn example_hertz(sets: &[String]) -> Problem {
+    let overrides: Vec<Override> = sets.iter().map(|s| Override::parse(s).unwrap()).collect();
+    let text = wearfem::examples::example("hertz").unwrap();
+    Problem::with_overrides(text, "hertz", &overrides).unwrap()
+}
 
-[[bodies]]
-name = "cylinder"
-[[bodies.blocks]]
-corners = [[-20.0, 0.0], [20.0, 0.0], [20.0, 40.0], [-20.0, 40.0]]
-u = {u1}
-v = [0.0, 0.05, 0.15, 0.35, 1.0]
-material = "steel"
-names = {{ bottom = "contact", top = "top" }}
-[[bodies.tractions]]
-edge = "top"
-normal = 38.825
-
-[[bodies]]
-name = "block"
-[[bodies.blocks]]
-corners = [[-100.0, -100.0], [100.0, -100.0], [100.0, 0.0], [-100.0, 0.0]]
-u = {u2}
-v = [0.0, 0.5, 0.8, 0.92, 0.98, 1.0]
-material = "steel"
-names = {{ bottom = "base", top = "surface" }}
-[[bodies.supports]]
-edge = "base"
-fix = ["x", "z"]
-
-[contact]
-body = "cylinder"
-edge = "contact"
-target_body = "block"
-target_edge = "surface"
-initial_shape = {{ radius = 500.0, center_x = 0.0 }}
-discretisation = "{discretisation}"
-
-[plate]
-edge = "top"
-motion = "vertical"
-"#
-    );
-    Problem::from_toml(&text, "hertz").unwrap()
+/// Hertz's half-width a (mm) and peak pressure p0 (MPa) of the example (Johnson, Contact
+/// Mechanics, §4.3): two equal bodies, 1/E* = 2/E', a = √(4 F R / (π E*)), p0 = 2F / (π a),
+/// F = 38.825 MPa × 40 mm per mm of thickness, R = 500 mm.
+fn hertz_closed_form(kind: &str) -> (f64, f64) {
+    let force = 38.825 * 40.0;
+    let (e, nu) = (2.0e5f64, 0.3f64);
+    let e_one = if kind == "plane_strain" {
+        e / (1.0 - nu * nu)
+    } else {
+        e
+    };
+    let e_star = e_one / 2.0;
+    let a = (4.0 * force * 500.0 / (std::f64::consts::PI * e_star)).sqrt();
+    (a, 2.0 * force / (std::f64::consts::PI * a))
 }
 
 fn solve(problem: &Problem) -> (CondensedContact, ContactSolution) {
@@ -160,58 +144,131 @@ fn half_width(contact: &CondensedContact, sol: &ContactSolution) -> f64 {
     (-intercept / slope).sqrt()
 }
 
+/// Where the 1 % bound on the oscillation holds: partner elements no larger than body 1's
+/// (ratios 1.3 : 1 and 2.7 : 1), or, with body 1 the finer side (1 : 1.3 and 1 : 2.7), a
+/// contact zone 2a ≈ 6 mm spanning about nine partner elements (0.65 and 0.675 mm). Five
+/// positions of body 2's lines each (shifted by 0.1 … 0.6 mm), so that no lucky alignment
+/// passes the check. Coarser partners: `hertz_ripple_from_a_coarse_partner_is_the_partners`.
 #[test]
 fn hertz_line_contact_on_non_matching_meshes() {
     for kind in ["plane_strain", "plane_stress"] {
-        // Hertz (Johnson, Contact Mechanics, §4.3): two equal bodies, 1/E* = 2/E',
-        // a = √(4 F R / (π E*)), p0 = 2F / (π a); F = 38.825 MPa × 40 mm per mm of thickness.
-        let force = 38.825 * 40.0;
-        let (e, nu) = (2.0e5f64, 0.3f64);
-        let e_one = if kind == "plane_strain" {
-            e / (1.0 - nu * nu)
-        } else {
-            e
-        };
-        let e_star = e_one / 2.0;
-        let a = (4.0 * force * 500.0 / (std::f64::consts::PI * e_star)).sqrt();
-        let p0 = 2.0 * force / (std::f64::consts::PI * a);
-        // Element sizes (mm) near the contact of body 1 and body 2, ratios 1 : 1.3 and 1 : 2.7
-        // each way round; body 2's lines are shifted by 0.37 mm, so no two edges meet. With
-        // 1 mm against 2.7 mm the contact (2a ≈ 6 mm) would span two elements of body 2 and the
-        // square-root edges of the pressure would sit inside them (docs/validation.md).
-        for (h1, h2) in [(1.0, 1.3), (0.5, 1.35), (1.3, 1.0), (2.7, 1.0)] {
-            let (contact, sol) = solve(&hertz(kind, h1, h2, "mortar"));
-            let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
-            let a_fit = half_width(&contact, &sol);
-            // 2 %: the issue's bound; the finite bodies (2a ≈ 6 mm against 40 and 100 mm)
-            // change the closed form by well under that.
-            assert!(
-                (peak - p0).abs() < 0.02 * p0,
-                "{kind} {h1}:{h2}: peak {peak:.3} MPa, Hertz {p0:.3}"
-            );
-            assert!(
-                (a_fit - a).abs() < 0.02 * a,
-                "{kind} {h1}:{h2}: half-width {a_fit:.4} mm, Hertz {a:.4}"
-            );
-            // Point-to-point oscillation, judged where the profile is smooth (|x| < 0.8 a,
-            // p > 0.6 p0): nearer the edges the square-root fall of the pressure is not a
-            // polynomial inside an element, on matched meshes as well.
-            let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
-            let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * p0);
-            assert!(
-                osc < 0.01 * peak,
-                "{kind} {h1}:{h2}: oscillation {osc:.3} MPa, peak {peak:.3}"
-            );
-            // The same meshes with one partner point per contact point oscillate by more: the
-            // check above can see the defect mortar removes.
-            let (_, sol) = solve(&hertz(kind, h1, h2, "collocation"));
-            let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * p0);
-            assert!(
-                osc > 0.01 * peak,
-                "{kind} {h1}:{h2}: collocation oscillation only {osc:.3} MPa"
-            );
+        let (a, p0) = hertz_closed_form(kind);
+        for (h1, h2) in [(0.5, 0.65), (0.25, 0.675), (1.3, 1.0), (2.7, 1.0)] {
+            for shift in [0.1, 0.3, 0.37, 0.45, 0.6] {
+                let (contact, sol) = solve(&hertz(kind, h1, h2, shift, "mortar"));
+                let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
+                let a_fit = half_width(&contact, &sol);
+                let case = format!("{kind} {h1}:{h2} shifted {shift}");
+                // 2 %: the issue's bound; the finite bodies (2a ≈ 6 mm against 40 and 100 mm)
+                // change the closed form by well under that.
+                assert!(
+                    (peak - p0).abs() < 0.02 * p0,
+                    "{case}: peak {peak:.3} MPa, Hertz {p0:.3}"
+                );
+                assert!(
+                    (a_fit - a).abs() < 0.02 * a,
+                    "{case}: half-width {a_fit:.4} mm, Hertz {a:.4}"
+                );
+                // Point-to-point oscillation, judged where the profile is smooth (|x| < 0.8 a,
+                // p > 0.6 p0): nearer the edges the square-root fall of the pressure is not a
+                // polynomial inside an element, on matched meshes as well. 1 %: the issue's
+                // bound; the measure gives < 0.03 % on the closed form itself (test below).
+                let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+                let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * p0);
+                assert!(
+                    osc < 0.01 * peak,
+                    "{case}: oscillation {osc:.3} MPa, peak {peak:.3}"
+                );
+                // The same meshes with one partner point per contact point oscillate by more: the
+                // check above can see the defect mortar removes.
+                let (_, sol) = solve(&hertz(kind, h1, h2, shift, "collocation"));
+                let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * p0);
+                assert!(
+                    osc > 0.01 * peak,
+                    "{case}: collocation oscillation only {osc:.3} MPa"
+                );
+            }
         }
     }
+}
+
+/// With body 1 finer than body 2 and only two to four partner elements across the contact, the
+/// pressure ripples by more than 1 % (1 : 2.7 with 1 mm elements: up to 4 %). The cause is
+/// body 2's discretisation, not the coupling: body 2's trace is a polynomial of degree p on
+/// each of its elements, one of which holds the square-root edge of the pressure; its slope
+/// jumps at its element ends, and body 1, fine enough to follow a kink, does so with a local
+/// spike of pressure (the half-plane's answer to a slope jump). Shown here on the example's
+/// own meshes and two variants.
+#[test]
+fn hertz_ripple_from_a_coarse_partner_is_the_partners() {
+    let kind = "plane_strain";
+    let (a, p0) = hertz_closed_form(kind);
+    let smooth = |p: f64| p > 0.6 * p0;
+    // The measure sees no natural curvature: the closed form at the 1 mm mesh's points
+    // (spacing ≥ 0.05 mm) deviates from its local parabolas by 2.4e-4 p0 (the cubic term of
+    // the square root over a 0.5 mm window); 5e-4 p0 bounds that floor of the measure, far
+    // below the 1 % it is used to judge.
+    let (contact, example) = solve(&example_hertz(&[]));
+    let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+    let exact: Vec<f64> = x
+        .iter()
+        .map(|&x| p0 * (1.0 - (x / a).powi(2)).max(0.0).sqrt())
+        .collect();
+    let natural = oscillation(&x, &exact, smooth);
+    assert!(natural < 5e-4 * p0, "closed form: {natural:.3e} MPa");
+    // The example's meshes share their lines (1 mm elements for |x| < 6 mm), so the contact
+    // edges x = ±3 mm lie on body 2's lines: the pressure is smooth (0.04 %).
+    let peak = example.pressure.iter().cloned().fold(0.0, f64::max);
+    let osc = oscillation(&x, &example.pressure, smooth);
+    assert!(osc < 0.005 * peak, "example: oscillation {osc:.3} MPa");
+    // Body 2 with 2 mm elements (lines at 0, ±2, ±4, ±6 mm, still shared with body 1's): its
+    // trace is a polynomial on each of body 1's elements, so mortar is collocation (to
+    // round-off: 5e-10 of the peak, the two traces' different sums through a condensed problem
+    // whose points lie 0.05 mm apart; 1e-8 allowed), yet the contact edges now lie
+    // mid-element in body 2 and the pressure ripples by ~4 % of the peak: no coupling is
+    // involved.
+    let coarse_block = "bodies[1].blocks[0].u=[0.0, 0.25, 0.4, 0.44, 0.47, 0.48, 0.49, 0.5, \
+                        0.51, 0.52, 0.53, 0.56, 0.6, 0.75, 1.0]";
+    let with = |discretisation: &str| {
+        let sets = [
+            coarse_block.to_string(),
+            format!("contact.discretisation={discretisation}"),
+        ];
+        solve(&example_hertz(&sets)).1
+    };
+    let (collocation, mortar) = (with("collocation"), with("mortar"));
+    let (max, _) = differences(&mortar.pressure, &collocation.pressure, 0);
+    assert!(
+        max < 1e-8 * peak,
+        "mortar and collocation differ by {max:.3e} MPa"
+    );
+    let osc = oscillation(&x, &collocation.pressure, smooth);
+    assert!(
+        osc > 0.02 * peak,
+        "2 mm body 2: oscillation only {osc:.3} MPa"
+    );
+    // Oscillation of the mortar solution with body 1 of 1 mm elements and body 2 of `h2` mm
+    // elements shifted by `shift`, at that model's own points.
+    let osc_of = |h2: f64, shift: f64| {
+        let (contact, sol) = solve(&hertz(kind, 1.0, h2, shift, "mortar"));
+        let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+        oscillation(&x, &sol.pressure, smooth)
+    };
+    // Body 2's lines at the contact edges (3 mm elements, lines at 0 and ±3 mm): every
+    // partner element is smooth inside the contact and the ripple is gone (0.18 %; 0.5 %, half
+    // the issue's bound, tells "gone" from "just under the bound").
+    let at_edges = osc_of(3.0, 0.0);
+    assert!(
+        at_edges < 0.005 * peak,
+        "lines at the edges: oscillation {at_edges:.3} MPa"
+    );
+    // Refining body 2 alone (2.7 → 0.54 mm, lines shifted by 0.37 mm) removes it; body 1 is
+    // unchanged, so the ripple was body 2's (1.73 % → 0.20 %).
+    let (coarse, fine) = (osc_of(2.7, 0.37), osc_of(0.54, 0.37));
+    assert!(
+        coarse > 0.01 * peak && fine < 0.005 * peak,
+        "body 2 of 2.7 mm: {coarse:.3} MPa, of 0.54 mm: {fine:.3} MPa"
+    );
 }
 
 /// Two blocks 10 mm wide, meshed independently (3 and 4 uneven elements across), the upper
@@ -305,18 +362,42 @@ fn patch_test_uniform_pressure_crosses_non_matching_meshes() {
     );
 }
 
-fn punch(even: bool, discretisation: &str) -> Problem {
-    let mut text = wearfem::examples::example("punch-b40").unwrap().to_string();
-    if even {
-        text = text.replace(
-            "u = [0.0, 0.2, 0.35, 0.3875, 0.425, 0.4625, 0.5, 0.5375, 0.575, 0.6125, 0.65, 0.8, 1.0]",
-            "u = 12",
+/// The strip's mesh lines of punch-b40: at the punch corners and its element ends (7.5 mm).
+const MATCHED_STRIP: &str =
+    "u = [0.0, 0.2, 0.35, 0.3875, 0.425, 0.4625, 0.5, 0.5375, 0.575, 0.6125, 0.65, 0.8, 1.0]";
+
+/// How the strip of punch-b40 is meshed along x.
+#[derive(Clone, Copy)]
+enum Strip {
+    /// As shipped, lines matched to the punch's elements.
+    Matched,
+    /// As shipped with every element under the punch cut into this many.
+    MatchedCut(usize),
+    /// This many even elements over its 200 mm (never 20 or a multiple: those meet 1070).
+    Even(usize),
+}
+
+fn punch(strip: Strip, discretisation: &str) -> Problem {
+    let lines = match strip {
+        Strip::Matched => MATCHED_STRIP.to_string(),
+        Strip::MatchedCut(k) => {
+            let x: Vec<String> = [0.0, 0.2]
+                .into_iter()
+                .chain((0..=8 * k).map(|i| 0.35 + 0.3 * i as f64 / (8 * k) as f64))
+                .chain([0.8, 1.0])
+                .map(|v| format!("{v:?}"))
+                .collect();
+            format!("u = [{}]", x.join(", "))
+        }
+        Strip::Even(n) => format!("u = {n}"),
+    };
+    let text = wearfem::examples::example("punch-b40")
+        .unwrap()
+        .replace(MATCHED_STRIP, &lines)
+        .replace(
+            "discretisation = \"collocation\"",
+            &format!("discretisation = \"{discretisation}\""),
         );
-    }
-    text = text.replace(
-        "discretisation = \"collocation\"",
-        &format!("discretisation = \"{discretisation}\""),
-    );
     Problem::from_toml(&text, "punch-b40").unwrap()
 }
 
@@ -335,14 +416,15 @@ fn differences(a: &[f64], b: &[f64], skip: usize) -> (f64, f64) {
 fn punch_on_an_evenly_meshed_strip_matches_the_matched_mesh() {
     // Same contact points on body 1 in both models; only the strip's mesh differs (12 even
     // elements of 16.7 mm whose lines miss the punch corners, against lines at the corners).
-    let (contact, matched) = solve(&punch(false, "collocation"));
-    let (_, even) = solve(&punch(true, "mortar"));
+    let (contact, matched) = solve(&punch(Strip::Matched, "collocation"));
+    let (_, even) = solve(&punch(Strip::Even(12), "mortar"));
     let peak = matched.pressure.iter().cloned().fold(0.0, f64::max);
     // 2 % of the peak away from the corners. The four points within 2.4 mm of the left
     // corner (1070) are excluded: there the pressure is singular and a 16.7 mm strip element
-    // spanning the corner cannot resolve the strip's response (it differs by 6 % of the peak at
-    // the second point, with collocation just as with mortar: a resolution limit of body 2, not
-    // of the coupling; docs/validation.md).
+    // spanning the corner cannot resolve the strip's response (6 % of the peak at the second
+    // point, with collocation just as with mortar). That is the coarse strip's discretisation
+    // error: it falls to 0.2 % with 96 even elements, and the matched strip is itself 2.2 %
+    // off there (punch_on_an_even_strip_converges_to_the_matched_mesh, docs/validation.md).
     let (max, _) = differences(&even.pressure, &matched.pressure, 4);
     assert!(
         max < 0.02 * peak,
@@ -350,12 +432,15 @@ fn punch_on_an_evenly_meshed_strip_matches_the_matched_mesh() {
     );
     assert_eq!(contact.len(), 65);
     // The steady state: p⁺ + p⁻ = 2p̃ = 33.333 MPa holds on any mesh (paper eq. 23a); p⁺ itself
-    // within 1 % r.m.s. of the peak 2p̃ (pointwise up to 3 % at the two ends of the p⁺ zone,
-    // where its slope jumps inside a strip element).
-    let st_matched = wearfem::driver::steady(&punch(false, "collocation"))
+    // within 1 % r.m.s. of the peak 2p̃. Pointwise it is 2.3 % off at the two ends of the p⁺
+    // zone, where its slope jumps inside a strip element: 3 % allowed here, and the issue's 1 %
+    // is met by a finer even strip (the test below).
+    let st_matched = wearfem::driver::steady(&punch(Strip::Matched, "collocation"))
         .unwrap()
         .0;
-    let st_even = wearfem::driver::steady(&punch(true, "mortar")).unwrap().0;
+    let st_even = wearfem::driver::steady(&punch(Strip::Even(12), "mortar"))
+        .unwrap()
+        .0;
     let sum = |s: &wearfem::steady::SteadyState| -> Vec<f64> {
         s.p_plus
             .iter()
@@ -373,12 +458,13 @@ fn punch_on_an_evenly_meshed_strip_matches_the_matched_mesh() {
         rms < 0.01 * 33.333 && max < 0.03 * 33.333,
         "steady p⁺: max {max:.3} MPa, r.m.s. {rms:.3} MPa"
     );
-    // The 1700-step run's last cycle, judged the same way (pointwise up to 3.1 % at the p⁺
-    // zone's ends here, 4 % allowed).
+    // The 1700-step run's last cycle, judged the same way (pointwise up to 2.6 % at the p⁺
+    // zone's ends here; 4 % allowed: the run is not yet steady, and how far its zone ends
+    // still have to move differs a little between the meshes).
     let run = |p: &Problem| wearfem::driver::wear(p, None, |_| {}).unwrap().history;
     let (h_matched, h_even) = (
-        run(&punch(false, "collocation")),
-        run(&punch(true, "mortar")),
+        run(&punch(Strip::Matched, "collocation")),
+        run(&punch(Strip::Even(12), "mortar")),
     );
     let (max, rms) = differences(&h_even.p_plus, &h_matched.p_plus, 0);
     assert!(
@@ -392,8 +478,8 @@ fn on_matched_meshes_mortar_is_collocation() {
     // Where body 2's trace is a polynomial of degree p on each element of body 1 (same mesh
     // lines, same p, straight edges), biorthogonality returns its point values exactly, and
     // D_ii = ∫ N_i ds is the Lobatto weight: the two methods differ by round-off only.
-    let (c_col, s_col) = solve(&punch(false, "collocation"));
-    let (c_mor, s_mor) = solve(&punch(false, "mortar"));
+    let (c_col, s_col) = solve(&punch(Strip::Matched, "collocation"));
+    let (c_mor, s_mor) = solve(&punch(Strip::Matched, "mortar"));
     for (a, b) in c_col.points.weight.iter().zip(&c_mor.points.weight) {
         assert!((a - b).abs() < 1e-12 * a, "weights {a} / {b}");
     }
@@ -401,4 +487,89 @@ fn on_matched_meshes_mortar_is_collocation() {
     let (max, _) = differences(&s_mor.pressure, &s_col.pressure, 0);
     // Round-off of two different sums of ~1e3 terms through a 65 × 65 solve: 1e-9 of peak.
     assert!(max < 1e-9 * peak, "pressures differ by {max:.3e} MPa");
+}
+
+/// The differences of the 12-element strip from the matched one are the coarse strip's own
+/// discretisation error, not the coupling's. The steady p⁺ has slope jumps at the ends of its
+/// zone (x ≈ 1077.1 and 1122.9 mm), which the matched strip has lines near (1077.5, 1122.5)
+/// while a 16.7 mm even element holds them inside; the first solve is singular at the corner
+/// 1070, inside an even element too. Refining the even strip (mortar on every mesh) brings all
+/// three to the matched mesh, or to a strip four times finer under the punch where the matched
+/// mesh is itself not converged (the first solve next to the corner).
+#[test]
+fn punch_on_an_even_strip_converges_to_the_matched_mesh() {
+    let two_p = 33.333; // 2p̃ = 2F₀/(l t), the scale of the steady pressures, MPa
+    let steady_p_plus = |s: Strip| {
+        wearfem::driver::steady(&punch(s, "mortar"))
+            .unwrap()
+            .0
+            .p_plus
+    };
+    let run_p_plus = |s: Strip| {
+        wearfem::driver::wear(&punch(s, "mortar"), None, |_| {})
+            .unwrap()
+            .history
+            .p_plus
+    };
+    let matched = (steady_p_plus(Strip::Matched), run_p_plus(Strip::Matched));
+    // The matched mesh's own error in the steady p⁺: 0.33 % of 2p̃ against the finer strip, so
+    // the issue's 1 % can tell a coarse strip from a fine one.
+    let (own, _) = differences(&matched.0, &steady_p_plus(Strip::MatchedCut(4)), 0);
+    assert!(
+        own < 0.005 * two_p,
+        "matched strip: {own:.3} MPa off the finer one"
+    );
+    let (_, first_finer) = solve(&punch(Strip::MatchedCut(4), "mortar"));
+    let peak = first_finer.pressure.iter().cloned().fold(0.0, f64::max);
+    // (elements, first solve off the finer strip, steady and run p⁺ off the matched one), as
+    // fractions of the peak and of 2p̃. The first solve skips the two corner points, as the
+    // issue does; pointwise everywhere else.
+    let errors: Vec<(usize, f64, f64, f64)> = [12, 48, 96]
+        .into_iter()
+        .map(|n| {
+            let (_, first) = solve(&punch(Strip::Even(n), "mortar"));
+            let (first, _) = differences(&first.pressure, &first_finer.pressure, 1);
+            let (steady, _) = differences(&steady_p_plus(Strip::Even(n)), &matched.0, 0);
+            let (run, _) = differences(&run_p_plus(Strip::Even(n)), &matched.1, 0);
+            (n, first / peak, steady / two_p, run / two_p)
+        })
+        .collect();
+    // 12 elements miss the issue's bounds (first solve 4.2 %, steady 2.3 %, run 2.6 %)...
+    let (_, first, steady, run) = errors[0];
+    assert!(
+        first > 0.02 && steady > 0.01 && run > 0.01,
+        "12 elements: {errors:?}"
+    );
+    // ...48 and 96 meet them (2 % and 1 %, the issue's bounds): at most 0.7 % and 0.3 %.
+    for &(n, first, steady, run) in &errors[1..] {
+        assert!(
+            first < 0.02 && steady < 0.01 && run < 0.01,
+            "{n} elements: first {first:.4}, steady {steady:.4}, run {run:.4}"
+        );
+    }
+}
+
+/// The pin example's first contact (Hertzian, a ≈ 4.6 mm) on a flat meshed independently but
+/// not coarser than the pin (1.31 mm against 1.05 mm): no ripple. The issue found 70.1 → 37.4
+/// MPa between neighbouring points with collocation, and 16 flat elements of 5 mm, whose lines
+/// at 0 and ±5 mm put the contact edges inside flat elements, rippled by 5.3 % with mortar.
+#[test]
+fn pin_first_contact_is_smooth() {
+    let text = wearfem::examples::example("pin").unwrap();
+    let (contact, sol) = solve(&Problem::from_toml(text, "pin").unwrap());
+    let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
+    let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+    let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * peak);
+    // 1 %: the issue's bound for Hertz (0.17 % here).
+    assert!(
+        osc < 0.01 * peak,
+        "oscillation {osc:.3} MPa, peak {peak:.3}"
+    );
+    let coarse = [Override::parse("bodies[1].blocks[0].u=16").unwrap()];
+    let (_, sol) = solve(&Problem::with_overrides(text, "pin", &coarse).unwrap());
+    let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * peak);
+    assert!(
+        osc > 0.02 * peak,
+        "5 mm flat: oscillation only {osc:.3} MPa"
+    );
 }

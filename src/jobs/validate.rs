@@ -11,6 +11,7 @@ use serde_json::{json, Value};
 use std::time::Instant;
 
 mod cases;
+mod wear_cases;
 
 /// How a check's difference is measured and bounded.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -221,13 +222,13 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     cases::elastic(&mut checks)?;
     cases::hertz(&mut checks)?;
     cases::first_solve(&mut checks)?;
-    cases::table2(&mut checks)?;
-    cases::power_laws(&mut checks, options.quick)?;
-    cases::load_variants(&mut checks)?;
-    cases::steady(&mut checks, options.quick)?;
-    cases::beyond(&mut checks)?;
+    wear_cases::table2(&mut checks)?;
+    wear_cases::power_laws(&mut checks, options.quick)?;
+    wear_cases::load_variants(&mut checks)?;
+    wear_cases::steady(&mut checks, options.quick)?;
+    wear_cases::beyond(&mut checks)?;
     if !options.quick {
-        cases::brake(&mut checks)?;
+        wear_cases::brake(&mut checks)?;
     }
     if let Some((id, value)) = &options.perturb {
         let check = checks
