@@ -58,6 +58,8 @@ fn main() {
         let text = wearfem::examples::refined_punch("punch-b40", e).expect("punch-b40 refines");
         let steady_problem = Problem::from_toml(&text, "steady").unwrap();
         let (state, contact, _) = driver::steady(&steady_problem).unwrap();
+        // A state the Newton iteration did not finish is no reference.
+        assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
         let peak = state
             .p_plus
             .iter()

@@ -483,6 +483,8 @@ fn integration_figures(out: &Path) {
     for name in ["punch-b40-b0.8", "punch-b40", "punch-b40-b1.2"] {
         let p = Problem::from_toml(wearfem::examples::example(name).unwrap(), name).unwrap();
         let (st, contact, _) = wearfem::driver::steady(&p).unwrap();
+        // A state the Newton iteration did not finish is no reference.
+        assert_eq!(st.status, wearfem::steady::SteadyStatus::Solved);
         let xs: Vec<f64> = contact.points.x.iter().map(|q| q[0]).collect();
         pressures.push(curve(&format!("{name}: p+"), &xs, &st.p_plus, 1.0));
         shapes.push(curve(name, &xs, &zeroed(&xs, &st.shape, 1100.0), 1e3));

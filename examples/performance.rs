@@ -62,4 +62,14 @@ fn main() {
     let iterations: usize = h.steps.iter().map(|s| s.iterations).sum();
     println!("wear run: {} steps, {} half periods, {} contact solves ({:.2} per step), {:.2} implicit iterations per step", h.steps.len(), h.steps.last().unwrap().half_period, h.solves, h.solves as f64 / steps, iterations as f64 / steps);
     println!("wear run: set-up {:.4} s, integration {:.4} s, {:.2} µs per contact solve including the wear update", run.setup_seconds, run.run_seconds, 1e6 * run.run_seconds / h.solves as f64);
+    let t = Instant::now();
+    match driver::steady(&p) {
+        Ok((state, _, setup)) => println!(
+            "steady: {} Newton iterations, {:?}, set-up {setup:.4} s, total {:.4} s",
+            state.iterations,
+            state.status,
+            t.elapsed().as_secs_f64()
+        ),
+        Err(e) => println!("steady: {e}"),
+    }
 }

@@ -40,6 +40,8 @@ fn study(label: &str, text: &str) {
     let run_total = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let (state, contact, _) = driver::steady(&problem).unwrap();
+    // A state the Newton iteration did not finish is no reference.
+    assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
     let steady_total = t.elapsed().as_secs_f64();
     let adaptive_text = text.replace("steps = 1700 ", "steps = 100000 ").replace(
         "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]",

@@ -210,6 +210,8 @@ fn main() {
     ] {
         let p = problem(name, &[]);
         let (state, contact, _) = driver::steady(&p).unwrap();
+        // A state the Newton iteration did not finish is no reference.
+        assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
         let run = driver::wear(&p, None, |_| {}).unwrap();
         let n = state.p_plus.len();
         let theory: Vec<f64> = (0..n)
@@ -276,6 +278,8 @@ fn beyond_the_paper() {
         let bb = format!("a = 1.0, b = {b:.1} }}");
         let p = problem("punch-b40-b0.8", &[("a = 1.0, b = 0.8 }", &bb)]);
         let (state, _, _) = driver::steady(&p).unwrap();
+        // A state the Newton iteration did not finish is no reference.
+        assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
         let sums: Vec<f64> = (0..state.p_plus.len())
             .map(|i| state.p_plus[i].powf(b) + state.p_minus[i].powf(b))
             .collect();
@@ -300,6 +304,8 @@ fn beyond_the_paper() {
     ];
     let p = problem("punch-b40-b0.8", &quadratic);
     let (state, _, _) = driver::steady(&p).unwrap();
+    // A state the Newton iteration did not finish is no reference.
+    assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
     let run = driver::wear(&p, None, |_| {}).unwrap();
     let h = &run.history;
     let iterations: usize = h.steps.iter().map(|s| s.iterations).sum();
@@ -318,6 +324,8 @@ fn beyond_the_paper() {
     ];
     let p = problem("punch-b40-variant3", &lift);
     let (state, contact, _) = driver::steady(&p).unwrap();
+    // A state the Newton iteration did not finish is no reference.
+    assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
     let worst = (0..state.p_plus.len())
         .map(|i| {
             let triangle = (66.0f64 + 2.0 / 3.0) * ((1115.0 - contact.points.x[i][0]) / 45.0);
@@ -342,6 +350,8 @@ fn beyond_the_paper() {
     let rocking = [("normal = 12.5", "normal = 0.0")];
     let p = problem("punch-b40-variant3", &rocking);
     let (state, _, _) = driver::steady(&p).unwrap();
+    // A state the Newton iteration did not finish is no reference.
+    assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
     let run = driver::wear(&p, Some(5000), |_| {}).unwrap();
     let h = &run.history;
     let plus_end = h.p_plus.iter().rposition(|&v| v > 0.0).unwrap_or(0);

@@ -196,6 +196,7 @@ impl System<'_> {
         // contact: the factorisation of an earlier iteration, corrected, solves it.
         let mut lu = UpdatedLu::default();
         let mut rhs = vec![0.0; size];
+        let mut previous_step = f64::INFINITY;
         for iteration in 1..=settings.max_iterations {
             let mat = lu.storage(size);
             let mut row = 0;
@@ -285,12 +286,19 @@ impl System<'_> {
                 .flat_map(|h| (0..n).map(move |i| (h, i)))
                 .map(|(h, i)| z[self.force(h, i)].abs())
                 .fold(0.0f64, f64::max);
+            // Newton's steps shrink quadratically until they reach the round-off of the
+            // solve, about cond · ε of the forces: 4e-12 at 1025 contact points, above the
+            // default tolerance of 1e-12, where they stop shrinking. A step below 1e-9 of the
+            // forces that did not halve is that floor, not progress still to be made.
+            let scale = force_scale.max(f64::MIN_POSITIVE);
+            let at_round_off = step <= 1e-9 * scale && step >= 0.5 * previous_step;
             if !changed
                 && residual < settings.tolerance.max(1e-14) * 1e3
-                && step <= settings.tolerance * force_scale.max(f64::MIN_POSITIVE)
+                && (step <= settings.tolerance * scale || at_round_off)
             {
                 return (SteadyStatus::Solved, iteration);
             }
+            previous_step = step;
         }
         (SteadyStatus::MaxIterations, settings.max_iterations)
     }
