@@ -64,8 +64,8 @@ fn main() {
     println!("wear run: set-up {:.4} s, integration {:.4} s, {:.2} µs per contact solve including the wear update", run.setup_seconds, run.run_seconds, 1e6 * run.run_seconds / h.solves as f64);
     let t = Instant::now();
     match driver::steady(&p) {
-        Ok((state, _, setup)) => println!(
-            "steady: {} Newton iterations, {:?}, set-up {setup:.4} s, total {:.4} s",
+        Ok((state, _, seconds)) => println!(
+            "steady: {} Newton iterations, {:?}, {seconds:.4} s with set-up (wall clock here: {:.4} s)",
             state.iterations,
             state.status,
             t.elapsed().as_secs_f64()

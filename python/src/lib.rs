@@ -6,6 +6,12 @@
 //! Every computation runs with the GIL released.
 
 use pyo3::exceptions::PyValueError;
+
+/// Rust allocations of the extension go to mimalloc, not glibc's malloc, whose behaviour
+/// Dask's workers change (see Cargo.toml); Python's own allocations are unaffected.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 use wearfem::driver::{self, JobError};

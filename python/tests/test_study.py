@@ -63,6 +63,23 @@ def test_thread_pool_equals_serial(punch):
         assert list(serial[k]) == list(threaded[k]), k
 
 
+@pytest.mark.parametrize("chunksize", [1, 2, 3, None, 100])
+def test_chunks_keep_the_grid_order(punch, chunksize):
+    """Any chunk size, even ones that do not divide the variants, gives the serial table."""
+    serial = wearfem.study(punch, GRID)
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        chunked = wearfem.study(punch, GRID, executor=pool, chunksize=chunksize)
+    for k in RESULTS + list(GRID):
+        assert list(serial[k]) == list(chunked[k]), k
+
+
+@pytest.mark.parametrize("chunksize", [0, -1, 2.5, "4"])
+def test_a_bad_chunksize_is_refused(punch, chunksize):
+    with concurrent.futures.ThreadPoolExecutor(1) as pool:
+        with pytest.raises(ValueError, match="chunksize"):
+            wearfem.study(punch, GRID, executor=pool, chunksize=chunksize)
+
+
 def test_dask_local_cluster_equals_serial(punch):
     """32 variants of punch-b40 on two worker processes: exactly the serial results."""
     distributed = pytest.importorskip("distributed")

@@ -111,5 +111,6 @@ def study(
     grid: Union[Mapping[str, Sequence[Any]], Sequence[Mapping[str, Any]]],
     executor: Optional[Any] = None,
     job: str = "steady",
+    chunksize: Optional[int] = None,
 ) -> Any: ...
 
