@@ -65,12 +65,20 @@ impl Capacitance {
         if self.columns.len() != size {
             self.columns = vec![None; size];
         }
-        for &i in inactive {
-            if self.columns[i].is_none() {
-                let mut z = vec![0.0; size];
-                z[i] = 1.0;
-                full.solve_in_place(&mut z, &mut scratch[..size]);
-                self.columns[i] = Some(z);
+        // The missing columns in one blocked solve (a cold start may need many).
+        let missing: Vec<usize> = inactive
+            .iter()
+            .copied()
+            .filter(|&i| self.columns[i].is_none())
+            .collect();
+        if !missing.is_empty() {
+            let mut block = faer::Mat::<f64>::zeros(size, missing.len());
+            for (j, &i) in missing.iter().enumerate() {
+                block[(i, j)] = 1.0;
+            }
+            full.solve_columns_in_place(&mut block);
+            for (j, &i) in missing.iter().enumerate() {
+                self.columns[i] = Some(block.col(j).iter().copied().collect());
             }
         }
         if !self.valid || self.inactive != inactive {

@@ -107,6 +107,28 @@ impl DenseLu {
             .unwrap_or(0.0)
     }
 
+    /// Solve A X = B in place for the columns of `rhs` (n × k, B becomes X) by faer's blocked
+    /// triangular solves: for many right-hand sides several times faster than k calls of
+    /// [`DenseLu::solve_in_place`], whose single-vector sweeps are bound by the memory
+    /// traffic of reading the factors once per column.
+    pub fn solve_columns_in_place(&self, rhs: &mut faer::Mat<f64>) {
+        let n = self.n;
+        assert_eq!(rhs.nrows(), n, "one row per unknown");
+        let mut permuted = faer::Mat::<f64>::from_fn(n, rhs.ncols(), |i, j| rhs[(self.perm[i], j)]);
+        let factors = faer::MatRef::from_column_major_slice(&self.lu, n, n);
+        faer::linalg::triangular_solve::solve_unit_lower_triangular_in_place(
+            factors,
+            permuted.as_mut(),
+            Par::Seq,
+        );
+        faer::linalg::triangular_solve::solve_upper_triangular_in_place(
+            factors,
+            permuted.as_mut(),
+            Par::Seq,
+        );
+        *rhs = permuted;
+    }
+
     /// Solve A x = b in place (b becomes x); `scratch` must have length n.
     pub fn solve_in_place(&self, b: &mut [f64], scratch: &mut [f64]) {
         let n = self.n;
@@ -194,6 +216,35 @@ mod tests {
             let b: Vec<f64> = (0..n).map(|i| (2 * i + 1) as f64).collect();
             let want: f64 = (0..n).map(|i| (i * (2 * i + 1)) as f64).sum();
             assert_eq!(dot(&a, &b), want, "n = {n}");
+        }
+    }
+
+    #[test]
+    fn many_columns_at_once_equal_one_at_a_time() {
+        // A 40 × 40 nonsymmetric system with pivoting, 7 right-hand sides: the blocked and the
+        // vector sweeps do the same arithmetic in another order, so they agree to round-off.
+        let n = 40;
+        let a: Vec<f64> = (0..n * n)
+            .map(|e| {
+                let (i, j) = (e / n, e % n);
+                ((7 * i + 3 * j) % 13) as f64 / 13.0 - 0.5
+                    + if i == (j + 5) % n { 9.0 } else { 0.0 }
+            })
+            .collect();
+        let mut lu = DenseLu::default();
+        lu.storage(n).copy_from_slice(&a);
+        assert!(lu.factor_in_place());
+        let mut block = faer::Mat::<f64>::from_fn(n, 7, |i, j| ((i * (j + 1)) as f64).sin());
+        let columns: Vec<Vec<f64>> = (0..7)
+            .map(|j| (0..n).map(|i| block[(i, j)]).collect())
+            .collect();
+        lu.solve_columns_in_place(&mut block);
+        let mut scratch = vec![0.0; n];
+        for (j, mut x) in columns.into_iter().enumerate() {
+            lu.solve_in_place(&mut x, &mut scratch);
+            for i in 0..n {
+                assert!((x[i] - block[(i, j)]).abs() < 1e-12, "({i}, {j})");
+            }
         }
     }
 

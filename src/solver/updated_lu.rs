@@ -105,12 +105,21 @@ impl UpdatedLu {
     /// capacitance matrix is singular.
     fn update(&mut self, k: usize) -> bool {
         let n = self.n;
-        for &r in &self.changed {
-            if self.columns[r].is_none() {
-                let mut z = vec![0.0; n];
-                z[r] = 1.0;
-                self.base.solve_in_place(&mut z, &mut self.scratch);
-                self.columns[r] = Some(z);
+        // The missing columns of Z in one blocked solve.
+        let missing: Vec<usize> = self
+            .changed
+            .iter()
+            .copied()
+            .filter(|&r| self.columns[r].is_none())
+            .collect();
+        if !missing.is_empty() {
+            let mut block = faer::Mat::<f64>::zeros(n, missing.len());
+            for (j, &r) in missing.iter().enumerate() {
+                block[(r, j)] = 1.0;
+            }
+            self.base.solve_columns_in_place(&mut block);
+            for (j, &r) in missing.iter().enumerate() {
+                self.columns[r] = Some(block.col(j).iter().copied().collect());
             }
         }
         self.base.solve_in_place(&mut self.y, &mut self.scratch);
