@@ -25,6 +25,7 @@ use faer::{Conj, Mat, Par, Side};
 use std::collections::HashMap;
 use std::sync::OnceLock;
 
+mod dissection;
 mod schur;
 
 /// Errors of the elasticity stage.

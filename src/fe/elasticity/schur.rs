@@ -2,8 +2,8 @@
 //! instead of one full solve per unit load.
 //!
 //! The displacements at the points depend only on the dofs of the elements they lie on (the
-//! trace dofs E): u = C u_E. Ordering the unknowns so that E comes last (the rest I by
-//! approximate minimum degree among themselves), the Cholesky factor's trailing block L_EE is
+//! trace dofs E): u = C u_E. Ordering the unknowns so that E comes last (the rest I by nested
+//! dissection of the mesh, [`super::dissection`]), the Cholesky factor's trailing block L_EE is
 //! the factor of the Schur complement S = K_EE − K_EI K_II⁻¹ K_IE, and (K⁻¹)_EE = S⁻¹. So
 //!
 //!   G = C K⁻¹ Cᵀ = C (L_EE L_EEᵀ)⁻¹ Cᵀ = Yᵀ Y,  Y = L_EE⁻¹ Cᵀ:
@@ -22,8 +22,7 @@ use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
 use faer::sparse::linalg::cholesky::{
     CholeskySymbolicParams, SymbolicCholeskyRaw, SymmetricOrdering,
 };
-use faer::sparse::linalg::{amd, SupernodalThreshold};
-use faer::sparse::SymbolicSparseColMat;
+use faer::sparse::linalg::SupernodalThreshold;
 use faer::{Mat, Par};
 
 /// One point's displacement as a combination of global dofs: (x dof, z dof, coefficient).
@@ -53,7 +52,7 @@ impl ElasticBody {
         if ne == 0 {
             return Ok(Mat::zeros(rows, rows));
         }
-        let forward = self.constrained_order(&position, &trace_dofs)?;
+        let forward = self.constrained_order(&position, &trace_dofs);
         let mut inverse = vec![0usize; n];
         for (new, &old) in forward.iter().enumerate() {
             inverse[old] = new;
@@ -160,53 +159,20 @@ fn trace_product(
 }
 
 impl ElasticBody {
-    /// The elimination order: the dofs outside E by approximate minimum degree of their own
-    /// block, then E (in `trace_dofs` order).
-    fn constrained_order(
-        &self,
-        position: &[usize],
-        trace_dofs: &[usize],
-    ) -> Result<Vec<usize>, ElasticityError> {
-        let n = position.len();
-        let interior: Vec<usize> = (0..n).filter(|&d| position[d] == usize::MAX).collect();
-        let mut local = vec![usize::MAX; n];
-        for (k, &d) in interior.iter().enumerate() {
-            local[d] = k;
-        }
-        let symbolic = self.matrix.symbolic();
-        let (col_ptr, row_idx) = (symbolic.col_ptr(), symbolic.row_idx());
-        let mut ptr = Vec::with_capacity(interior.len() + 1);
-        let mut idx = Vec::new();
-        ptr.push(0);
-        for &d in &interior {
-            let mut rows: Vec<usize> = row_idx[col_ptr[d]..col_ptr[d + 1]]
-                .iter()
-                .filter_map(|&r| (local[r] != usize::MAX).then_some(local[r]))
-                .collect();
-            rows.sort_unstable();
-            idx.extend(rows);
-            ptr.push(idx.len());
-        }
-        let ni = interior.len();
-        let pattern = SymbolicSparseColMat::new_checked(ni, ni, ptr, None, idx);
-        let mut perm = vec![0usize; ni];
-        let mut perm_inv = vec![0usize; ni];
-        let mut buffer = MemBuffer::new(amd::order_scratch::<usize>(ni, pattern.compute_nnz()));
-        amd::order(
-            &mut perm,
-            &mut perm_inv,
-            pattern.as_ref(),
-            Default::default(),
-            MemStack::new(&mut buffer),
-        )
-        .map_err(|_| ElasticityError::Singular {
-            body: self.name.clone(),
-        })?;
-        Ok(perm
-            .iter()
-            .map(|&k| interior[k])
+    /// The elimination order: the dofs outside E by nested dissection of the mesh entities
+    /// they belong to ([`super::dissection`]), then E (in `trace_dofs` order). Approximate
+    /// minimum degree of the interior alone, the earlier choice, left 1.2–1.7 times the fill
+    /// (punch-b40 at 64 elements under the punch: 5.9 and 5.4 million factor entries for punch
+    /// and strip, against 4.8 and 3.1) and took 2–3 times as long to factorise.
+    fn constrained_order(&self, position: &[usize], trace_dofs: &[usize]) -> Vec<usize> {
+        let offsets = &self.dofs.entity_offset;
+        let interior_dofs =
+            |e: usize| (offsets[e]..offsets[e + 1]).filter(|&d| position[d] == usize::MAX);
+        super::dissection::entity_order(&self.mesh, |e| interior_dofs(e).next().is_some())
+            .into_iter()
+            .flat_map(interior_dofs)
             .chain(trace_dofs.iter().copied())
-            .collect())
+            .collect()
     }
 }
 
