@@ -333,53 +333,18 @@ fn project_on_body2(
     ))
 }
 
-/// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces.
-///
-/// Two ways give the same G to round-off (tested in `elasticity::schur`): 2N solves with the
-/// body's factorisation, or the Schur complement onto the trace dofs
-/// ([`ElasticBody::trace_flexibility`]), which costs one more sparse factorisation but grows
-/// far more gently with N. Below [`SCHUR_FROM_POINTS`] points the solves are cheaper.
+/// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces,
+/// by the Schur complement onto the trace dofs ([`ElasticBody::trace_flexibility`]). It gives
+/// what 2N solves with the body's factorisation give, to round-off (tested in
+/// `elasticity::schur`), and costs less at every size measured: 16 against 27 ms at the 65
+/// points of punch-b40, the same at 129, 3 times less at 513 (docs/performance.md).
 fn flexibility(
     problem: &Problem,
     body: &ElasticBody,
     traces: &[Trace],
 ) -> Result<Mat<f64>, ProblemError> {
-    if traces.len() < SCHUR_FROM_POINTS && std::env::var_os("WEARFEM_SCHUR").is_none() {
-        return flexibility_by_solves(body, traces)
-            .map_err(|e| problem.error("bodies", e.to_string()));
-    }
     body.trace_flexibility(traces)
         .map_err(|e| problem.error("contact", e.to_string()))
-}
-
-/// Contact points from which the Schur complement is the cheaper way to the flexibility of
-/// Example 1's bodies (docs/performance.md, "Refining the contact").
-pub const SCHUR_FROM_POINTS: usize = 120;
-
-/// G by one multi-right-hand-side solve with the body's factorisation.
-fn flexibility_by_solves(
-    body: &ElasticBody,
-    traces: &[Trace],
-) -> Result<Mat<f64>, crate::elasticity::ElasticityError> {
-    let n = traces.len();
-    let n_dofs = body.dofs.n_dofs();
-    let mut rhs = Mat::<f64>::zeros(n_dofs, 2 * n);
-    for (i, tr) in traces.iter().enumerate() {
-        for &(g, coef) in tr {
-            for c in 0..2 {
-                rhs[(g[c], 2 * i + c)] += coef;
-            }
-        }
-    }
-    body.solve_in_place(&mut rhs)?;
-    Ok(Mat::from_fn(2 * n, 2 * n, |r, col| {
-        let (i, c) = (r / 2, r % 2);
-        traces[i]
-            .iter()
-            .filter(|(g, _)| !body.is_fixed(g[c]))
-            .map(|&(g, coef)| coef * rhs[(g[c], col)])
-            .sum()
-    }))
 }
 
 /// Body 2's trace of every constraint, filling in the initial gaps (and, for mortar, the
