@@ -1,0 +1,195 @@
+//! The command line's longer jobs, kept out of `main.rs`: `validate`, `sweep` and the
+//! paper's §6 methods of `steady` (moved here unchanged).
+
+use super::*;
+
+/// `wearfem validate`: rerun every validation claim, print the table, write validation.md and
+/// validation.json to `out` (and the table into `update_doc`); a FAIL is exit code 1.
+pub(crate) fn validate(
+    quick: bool,
+    out: &Path,
+    update_doc: Option<&Path>,
+    perturb: Option<&str>,
+) -> Result<(), Failure> {
+    let perturb = match perturb {
+        None => None,
+        Some(text) => {
+            let parsed = text
+                .split_once('=')
+                .and_then(|(id, v)| Some((id.to_string(), v.trim().parse::<f64>().ok()?)));
+            Some(parsed.ok_or_else(|| {
+                Failure::Input(format!("--perturb: expected ID=VALUE, got \"{text}\""))
+            })?)
+        }
+    };
+    let options = wearfem::validate::Options { quick, perturb };
+    let report = wearfem::validate::run(&options).map_err(|e| match e {
+        wearfem::validate::ValidateError::UnknownCheck(_) => Failure::Input(e.to_string()),
+        other => Failure::Compute(other.to_string()),
+    })?;
+    let table = report.markdown();
+    print!("{table}");
+    write_text(out, "validation.md", &table)?;
+    write_json(out, "validation.json", &report.json())?;
+    if let Some(doc) = update_doc {
+        let text = std::fs::read_to_string(doc)
+            .map_err(|e| Failure::Input(format!("{}: cannot read: {e}", doc.display())))?;
+        let new = wearfem::validate::splice(&text, &table).ok_or_else(|| {
+            Failure::Input(format!(
+                "{}: no table markers ({} … {})",
+                doc.display(),
+                wearfem::validate::DOC_BEGIN,
+                wearfem::validate::DOC_END
+            ))
+        })?;
+        std::fs::write(doc, new)
+            .map_err(|e| Failure::Compute(format!("cannot write {}: {e}", doc.display())))?;
+    }
+    println!(
+        "{:.1} s → {}",
+        report.seconds,
+        out.join("validation.md").display()
+    );
+    if !report.passed() {
+        return Err(Failure::Compute(format!(
+            "{} of {} validation checks failed (see the table)",
+            report.failures(),
+            report.checks.len()
+        )));
+    }
+    Ok(())
+}
+
+/// `wearfem sweep`: every variant is checked before any is solved; a variant whose input is
+/// bad stops the study with exit code 2 and nothing written.
+pub(crate) fn sweep(
+    name: &str,
+    set: &[String],
+    run: bool,
+    jobs: usize,
+    out: &Path,
+    quiet: bool,
+) -> Result<(), Failure> {
+    use wearfem::sweep::{self, Job, Sweep};
+    let (text, file) = read(name)?;
+    let input = |e: wearfem::problem::ProblemError| Failure::Input(e.to_string());
+    let variants = Sweep::parse(set)
+        .and_then(|s| s.prepare(&text, &file))
+        .map_err(input)?;
+    let job = if run { Job::Run } else { Job::Steady };
+    let threads = if jobs == 0 {
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    } else {
+        jobs
+    };
+    let start = std::time::Instant::now();
+    let bar = progress::count_bar(variants.len(), "variants", quiet);
+    let results = sweep::run(&variants, job, threads, &|_| bar.inc(1));
+    bar.finish_and_clear();
+    let seconds = start.elapsed().as_secs_f64();
+    let outcomes = results
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(Failure::from)?;
+    let title = &variants[0].problem.spec.title;
+    sweep::report::write(out, title, job, threads, &variants, &outcomes, seconds)?;
+    let failed = outcomes.iter().filter(|o| !o.converged).count();
+    println!(
+        "{file}: {} variants on {threads} threads in {seconds:.2} s; {failed} did not converge → {}",
+        variants.len(),
+        out.join("sweep.csv").display()
+    );
+    if failed > 0 {
+        return Err(Failure::Compute(format!("{failed} of {} variants did not converge (see the status column of {}); all rows were written", variants.len(), out.join("sweep.csv").display())));
+    }
+    Ok(())
+}
+
+fn write_text(dir: &Path, name: &str, text: &str) -> Result<(), Failure> {
+    let path = dir.join(name);
+    std::fs::create_dir_all(dir)
+        .and_then(|_| std::fs::write(&path, text))
+        .map_err(|e| Failure::Compute(format!("cannot write {}: {e}", path.display())))
+}
+
+/// The settings of `wearfem steady --method ...` from its options.
+pub(crate) fn method_settings(
+    reading: &str,
+    sensitivities: &str,
+    penalty: Option<f64>,
+    tolerance: f64,
+) -> Result<MethodSettings, Failure> {
+    let reading = match reading {
+        "mean" => AveragedReading::Mean,
+        "sum" => AveragedReading::Sum,
+        other => {
+            return Err(Failure::Input(format!(
+                "--reading: must be mean or sum, got \"{other}\""
+            )))
+        }
+    };
+    let sensitivities = match sensitivities {
+        "fd" => Sensitivities::FiniteDifference,
+        "exact" => Sensitivities::Exact,
+        other => {
+            return Err(Failure::Input(format!(
+                "--sensitivities: must be fd or exact, got \"{other}\""
+            )))
+        }
+    };
+    if penalty.is_some_and(|c| !(c.is_finite() && c > 0.0)) {
+        return Err(Failure::Input(
+            "--penalty: must be a finite c_n > 0 (MPa/mm)".into(),
+        ));
+    }
+    if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 1.0) {
+        return Err(Failure::Input(format!(
+            "--tolerance: must lie in (0, 1), got {tolerance}"
+        )));
+    }
+    Ok(MethodSettings {
+        reading,
+        sensitivities,
+        penalty_stiffness: penalty,
+        tolerance,
+        ..Default::default()
+    })
+}
+
+/// `wearfem steady` for reciprocating sliding, by any method.
+pub(crate) fn steady_by(
+    p: &Problem,
+    method: SteadyMethod,
+    settings: MethodSettings,
+    out: &Path,
+    vtk: bool,
+) -> Result<(), Failure> {
+    let (outcome, contact, setup) = driver::steady_by(p, method, settings)?;
+    if outcome.state.status != wearfem::steady::SteadyStatus::Solved {
+        // Nothing from a failed solve is written as a result.
+        return Err(Failure::Compute(format!("the {} method did not converge in {} iterations ({:?}, eq. 49 residual {:.3e}); nothing was written", method.name(), outcome.state.iterations, outcome.state.status, outcome.residual)));
+    }
+    wearfem::output::write_steady_method(out, p, &contact, &outcome, setup)?;
+    if vtk {
+        wearfem::vtk::write_steady(out, p, &outcome.state)?;
+    }
+    if let Some(w) =
+        driver::edge_ends_warning(p, &driver::steady_edge_ends(&contact, &outcome.state))
+    {
+        eprintln!("{w}");
+    }
+    let last = outcome.history.last();
+    println!(
+        "{}: steady state by the {} method: {} iterations, {} contact solves, {:.4} s (+{:.4} s set-up); eq. 49 residual {:.2e}, max δw {:.2e} mm → {}",
+        p.file,
+        method.name(),
+        outcome.state.iterations,
+        outcome.contact_solves,
+        outcome.seconds,
+        setup,
+        outcome.residual,
+        last.map_or(f64::NAN, |r| r.max_delta_w),
+        out.display()
+    );
+    Ok(())
+}
