@@ -181,26 +181,7 @@ fn hertz_line_contact() {
         let a = (4.0 * force_per_length * radius / (std::f64::consts::PI * e_star)).sqrt();
         let p0 = 2.0 * force_per_length / (std::f64::consts::PI * a);
         let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
-        // Half-width from the elliptic profile: p² = p0²(1 − x²/a²) is linear in x²; fit it
-        // through the loaded points that are not next to the contact edge.
-        let pts: Vec<(f64, f64)> = contact
-            .points
-            .x
-            .iter()
-            .zip(&sol.pressure)
-            .filter(|(_, &p)| p > 0.3 * peak)
-            .map(|(x, &p)| (x[0] * x[0], p * p))
-            .collect();
-        let n = pts.len() as f64;
-        let (sx, sy) = (
-            pts.iter().map(|p| p.0).sum::<f64>(),
-            pts.iter().map(|p| p.1).sum::<f64>(),
-        );
-        let sxx = pts.iter().map(|p| p.0 * p.0).sum::<f64>();
-        let sxy = pts.iter().map(|p| p.0 * p.1).sum::<f64>();
-        let slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-        let intercept = (sy - slope * sx) / n;
-        let a_fit = (-intercept / slope).sqrt();
+        let a_fit = wearfem::validate::hertz_half_width(&contact, &sol);
         // 2 %: the bound; the finite bodies (contact 2a ≈ 6 mm against 40 and 100 mm)
         // stiffen the response by well under that.
         assert!(

@@ -122,28 +122,6 @@ fn oscillation(x: &[f64], p: &[f64], keep: impl Fn(f64) -> bool) -> f64 {
     worst
 }
 
-/// Half-width of the elliptic profile p² = p0²(1 − x²/a²), linear in x², fitted through the
-/// loaded points that are not next to the contact edges (p > 0.3 peak).
-fn half_width(contact: &CondensedContact, sol: &ContactSolution) -> f64 {
-    let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
-    let pts: Vec<(f64, f64)> = contact
-        .points
-        .x
-        .iter()
-        .zip(&sol.pressure)
-        .filter(|(_, &p)| p > 0.3 * peak)
-        .map(|(x, &p)| (x[0] * x[0], p * p))
-        .collect();
-    let n = pts.len() as f64;
-    let sx: f64 = pts.iter().map(|p| p.0).sum();
-    let sy: f64 = pts.iter().map(|p| p.1).sum();
-    let sxx: f64 = pts.iter().map(|p| p.0 * p.0).sum();
-    let sxy: f64 = pts.iter().map(|p| p.0 * p.1).sum();
-    let slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-    let intercept = (sy - slope * sx) / n;
-    (-intercept / slope).sqrt()
-}
-
 /// Where the 1 % bound on the oscillation holds: partner elements no larger than body 1's
 /// (ratios 1.3 : 1 and 2.7 : 1), or, with body 1 the finer side (1 : 1.3 and 1 : 2.7), a
 /// contact zone 2a ≈ 6 mm spanning about nine partner elements (0.65 and 0.675 mm). Five
@@ -157,7 +135,7 @@ fn hertz_line_contact_on_non_matching_meshes() {
             for shift in [0.1, 0.3, 0.37, 0.45, 0.6] {
                 let (contact, sol) = solve(&hertz(kind, h1, h2, shift, "mortar"));
                 let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
-                let a_fit = half_width(&contact, &sol);
+                let a_fit = wearfem::validate::hertz_half_width(&contact, &sol);
                 let case = format!("{kind} {h1}:{h2} shifted {shift}");
                 // 2 %: the bound; the finite bodies (2a ≈ 6 mm against 40 and 100 mm)
                 // change the closed form by well under that.

@@ -197,6 +197,33 @@ impl Report {
     }
 }
 
+/// Half-width a (mm) of a Hertz line contact measured from a solution: the elliptic profile
+/// p² = p0²(1 − x²/a²) is linear in x², fitted by least squares through the points above 30 %
+/// of the peak pressure (away from the contact edges, where the square-root fall is not
+/// resolved by a polynomial inside an element). The contact is assumed centred at x = 0.
+pub fn hertz_half_width(
+    contact: &crate::contact::CondensedContact,
+    solution: &crate::complementarity::ContactSolution,
+) -> f64 {
+    let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
+    let pts: Vec<(f64, f64)> = contact
+        .points
+        .x
+        .iter()
+        .zip(&solution.pressure)
+        .filter(|(_, &p)| p > 0.3 * peak)
+        .map(|(x, &p)| (x[0] * x[0], p * p))
+        .collect();
+    let n = pts.len() as f64;
+    let sx: f64 = pts.iter().map(|p| p.0).sum();
+    let sy: f64 = pts.iter().map(|p| p.1).sum();
+    let sxx: f64 = pts.iter().map(|p| p.0 * p.0).sum();
+    let sxy: f64 = pts.iter().map(|p| p.0 * p.1).sum();
+    let slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    let intercept = (sy - slope * sx) / n;
+    (-intercept / slope).sqrt()
+}
+
 /// Markers around the generated table in docs/validation.md.
 pub const DOC_BEGIN: &str = "<!-- wearfem validate: begin -->";
 /// End marker, see [`DOC_BEGIN`].

@@ -144,25 +144,7 @@ pub fn hertz(checks: &mut Checks) -> Outcome {
         let a = (4.0 * force * 500.0 / (std::f64::consts::PI * e_star)).sqrt();
         let p0 = 2.0 * force / (std::f64::consts::PI * a);
         let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
-        // Half-width from the elliptic profile: p² is linear in x²; least squares through the
-        // points above 30 % of the peak (away from the contact edge).
-        let pts: Vec<(f64, f64)> = contact
-            .points
-            .x
-            .iter()
-            .zip(&sol.pressure)
-            .filter(|(_, &p)| p > 0.3 * peak)
-            .map(|(x, &p)| (x[0] * x[0], p * p))
-            .collect();
-        let n = pts.len() as f64;
-        let (sx, sy) = (
-            pts.iter().map(|p| p.0).sum::<f64>(),
-            pts.iter().map(|p| p.1).sum::<f64>(),
-        );
-        let sxx = pts.iter().map(|p| p.0 * p.0).sum::<f64>();
-        let sxy = pts.iter().map(|p| p.0 * p.1).sum::<f64>();
-        let slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-        let a_fit = (-(sy - slope * sx) / n / slope).sqrt();
+        let a_fit = super::hertz_half_width(&contact, &sol);
         let label = kind.replace('_', " ");
         // 2 %: the finite bodies (2a ≈ 6 mm against 40 and 100 mm) stiffen the response by
         // well under that.
