@@ -1,45 +1,45 @@
-//! How many half periods the paper's schedule and the adaptive one need to come within 0.5 %
+//! How many half periods, steps and contact solves each schedule needs to come within 0.5 %
 //! of the peak pressure of the steady state (issue 9), for Example 1 (punch-b40) with E
 //! elements under the punch (p = 8, strip lines matched).
 //!
-//! `cargo run --release --example adaptive [ELEMENTS…]` (default 8 16 32 64). The paper's
-//! schedule (k = 1, 5, 10) is continued with k = 10 beyond its 1700 steps until it gets
-//! there; every step's pressure is compared with `wearfem steady` on the same mesh. A run
-//! "gets there" at the first '−' step after which both the last '+' and the last '−'
-//! pressures are within the bound at every contact point. The adaptive run is reported both
-//! where it first gets there and where it stops by itself.
+//! `cargo run --release --example adaptive [ELEMENTS…]` (default 8 16 32 64). Schedules:
+//! - *process*: k = 1 throughout, one step per half period: the half-period scheme without
+//!   extrapolation, the closest the integration gets to the process itself;
+//! - *paper*: k = 1, 5, 10, continued with k = 10 beyond its 1700 steps until it gets there;
+//! - *adaptive, first order*: `[wear.adaptive]` with `richardson = false`;
+//! - *adaptive*: `[wear.adaptive]` as shipped (step doubling with Richardson extrapolation).
+//!
+//! Every step's pressure is compared with `wearfem steady` on the same mesh
+//! ([`wearfem::wear::WearHistory::half_periods_to_reach`]). The adaptive run is also reported
+//! where it stops by itself. `ADAPTIVE_EXTRA="max_factor = 32"` adds keys to
+//! `[wear.adaptive]`.
 
 use wearfem::driver;
 use wearfem::problem::Problem;
+use wearfem::wear::WearHistory;
 
 const BOUND: f64 = 0.005;
+const RECORD: &str = "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]";
 
-/// Half periods at which `snapshots` (every step) first come within BOUND of the steady
-/// pressures, or None.
-fn first_within(
-    run: &wearfem::wear::WearHistory,
-    plus: &[f64],
-    minus: &[f64],
-    peak: f64,
-) -> Option<usize> {
-    let worst = |a: &[f64], b: &[f64]| {
-        a.iter()
-            .zip(b)
-            .map(|(x, y)| (x - y).abs())
-            .fold(0.0, f64::max)
-            / peak
-    };
-    let mut last_plus: Option<f64> = None;
-    for s in &run.snapshots {
-        if s.direction == "+" {
-            last_plus = Some(worst(&s.pressure, plus));
-        } else if let Some(p) = last_plus {
-            if p.max(worst(&s.pressure, minus)) <= BOUND {
-                return Some(s.half_period);
-            }
+/// `text` with `steps` steps, every one recorded, and `extra` after the record line.
+fn every_step(text: &str, steps: usize, extra: &str) -> Problem {
+    let list: Vec<String> = (1..=steps).map(|s| s.to_string()).collect();
+    let edited = text
+        .replace("steps = 1700 ", &format!("steps = {steps} "))
+        .replace(RECORD, &format!("record = [{}]\n{extra}", list.join(", ")));
+    Problem::from_toml(&edited, "adaptive example").unwrap()
+}
+
+/// "half periods (steps, solves)" where `history` first gets within the bound.
+fn reach(history: &WearHistory, plus: &[f64], minus: &[f64], peak: f64) -> String {
+    match history.half_periods_to_reach(plus, minus, peak, BOUND) {
+        Some(hp) => {
+            let step = history.steps.iter().find(|s| s.half_period == hp).unwrap();
+            let solves: usize = history.steps[..step.step].iter().map(|s| s.solves).sum();
+            format!("{hp} ({}, {solves})", step.step)
         }
+        None => "not reached".into(),
     }
-    None
 }
 
 fn main() {
@@ -52,64 +52,50 @@ fn main() {
     } else {
         elements
     };
-    println!("| E | points | paper's schedule: half periods to 0.5 % (steps) | adaptive: half periods to 0.5 % (steps) | adaptive stops at: half periods (steps), distance |");
-    println!("|---|---|---|---|---|");
+    let extra = std::env::var("ADAPTIVE_EXTRA").unwrap_or_default();
+    println!("Half periods (steps, contact solves) to 0.5 % of the steady peak pressure:\n");
+    println!("| E | points | process (k = 1) | paper's schedule | adaptive, first order | adaptive | adaptive stops at, distance |");
+    println!("|---|---|---|---|---|---|---|");
     for e in elements {
         let text = wearfem::examples::refined_punch("punch-b40", e).expect("punch-b40 refines");
-        let steady_problem = Problem::from_toml(&text, "steady").unwrap();
-        let (state, contact, _) = driver::steady(&steady_problem).unwrap();
+        let (state, contact, _) =
+            driver::steady(&Problem::from_toml(&text, "steady").unwrap()).expect("steady state");
         // A state the Newton iteration did not finish is no reference.
         assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
-        let peak = state
+        let (plus, minus) = (&state.p_plus, &state.p_minus);
+        let peak = plus.iter().chain(minus).fold(0.0f64, |a, p| a.max(p.abs()));
+        let run = |problem: Problem| driver::wear(&problem, None, |_| {}).unwrap().history;
+        let process = run(every_step(&text, 20_000, "extrapolation = [{ k = 1 }]"));
+        let paper = run(every_step(&text, 8000, ""));
+        let first_order = run(every_step(
+            &text,
+            4000,
+            &format!("\n[wear.adaptive]\nrichardson = false\n{extra}"),
+        ));
+        let adaptive = run(every_step(
+            &text,
+            4000,
+            &format!("\n[wear.adaptive]\n{extra}"),
+        ));
+        let last = adaptive.steps.last().unwrap();
+        let distance = adaptive
             .p_plus
             .iter()
-            .chain(&state.p_minus)
-            .fold(0.0f64, |a, p| a.max(p.abs()));
-        let all = |steps: usize| {
-            let list: Vec<String> = (1..=steps).map(|s| s.to_string()).collect();
-            format!("record = [{}]", list.join(", "))
-        };
-        let record = "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]";
-        let paper = text
-            .replace("steps = 1700 ", "steps = 8000 ")
-            .replace(record, &all(8000));
-        let run =
-            driver::wear(&Problem::from_toml(&paper, "paper").unwrap(), None, |_| {}).unwrap();
-        let paper_reach = first_within(&run.history, &state.p_plus, &state.p_minus, peak);
-        let adaptive = text
-            .replace("steps = 1700 ", "steps = 4000 ")
-            .replace(record, &format!("{}\n\n[wear.adaptive]", all(4000)));
-        let run = driver::wear(
-            &Problem::from_toml(&adaptive, "adaptive").unwrap(),
-            None,
-            |_| {},
-        )
-        .unwrap();
-        let h = &run.history;
-        let adaptive_reach = first_within(h, &state.p_plus, &state.p_minus, peak);
-        let last = h.steps.last().unwrap();
-        let distance = h
-            .p_plus
-            .iter()
-            .zip(&state.p_plus)
-            .chain(h.p_minus.iter().zip(&state.p_minus))
+            .zip(plus)
+            .chain(adaptive.p_minus.iter().zip(minus))
             .map(|(a, b)| (a - b).abs())
             .fold(0.0, f64::max)
             / peak;
-        let step_of = |hp: Option<usize>, history: Option<&wearfem::wear::WearHistory>| match hp {
-            Some(hp) => match history.and_then(|h| h.steps.iter().find(|s| s.half_period == hp)) {
-                Some(s) => format!("{hp} ({})", s.step),
-                None => format!("{hp}"),
-            },
-            None => "not within 8000 steps".into(),
-        };
         println!(
-            "| {e} | {} | {} | {} | {} ({}), {:.2} % |",
+            "| {e} | {} | {} | {} | {} | {} | {} ({}, {}), {:.2} % |",
             contact.len(),
-            step_of(paper_reach, None),
-            step_of(adaptive_reach, Some(h)),
+            reach(&process, plus, minus, peak),
+            reach(&paper, plus, minus, peak),
+            reach(&first_order, plus, minus, peak),
+            reach(&adaptive, plus, minus, peak),
             last.half_period,
             last.step,
+            adaptive.solves,
             100.0 * distance
         );
     }

@@ -16,6 +16,7 @@ mod adaptive;
 pub mod kinematics;
 mod outcome;
 mod step;
+mod workspace;
 pub use adaptive::AdaptiveSpec;
 pub use outcome::{non_rigid_part, steady_distance, SteadyDistance, StopReason};
 use serde::{Deserialize, Serialize};
@@ -182,6 +183,40 @@ pub struct WearHistory {
     /// How far the last full cycle is from the steady state; None until a cycle is complete
     /// (then `p_plus`, `p_minus` are not results either).
     pub steady_distance: Option<SteadyDistance>,
+}
+
+impl WearHistory {
+    /// The half period at which the run first came within `bound` × `scale` (MPa) of the
+    /// pressures `p_plus` and `p_minus` of a reference state (MPa, one per contact point) and
+    /// stayed there for a whole cycle: the first '−' step whose pressures and those of the '+'
+    /// step before it are within the bound at every point. Reads the snapshots, so record
+    /// every step. None if it never gets there (or the sliding is monotonic).
+    pub fn half_periods_to_reach(
+        &self,
+        p_plus: &[f64],
+        p_minus: &[f64],
+        scale: f64,
+        bound: f64,
+    ) -> Option<usize> {
+        let worst = |a: &[f64], b: &[f64]| {
+            a.iter()
+                .zip(b)
+                .map(|(x, y)| (x - y).abs())
+                .fold(0.0, f64::max)
+                / scale
+        };
+        let mut last_plus: Option<f64> = None;
+        for s in &self.snapshots {
+            if s.direction == "+" {
+                last_plus = Some(worst(&s.pressure, p_plus));
+            } else if let Some(plus) = last_plus {
+                if plus.max(worst(&s.pressure, p_minus)) <= bound {
+                    return Some(s.half_period);
+                }
+            }
+        }
+        None
+    }
 }
 
 /// Largest pointwise difference, relative to the largest wear, between the wear a

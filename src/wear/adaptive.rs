@@ -1,25 +1,40 @@
 //! Error-controlled extrapolation: the factor k (half periods per step) chosen from a local
-//! error estimate instead of a fixed schedule.
+//! error estimate by step doubling, with local (Richardson) extrapolation.
 //!
-//! A step holds the wear rate at its end-of-step value for k half periods (backward Euler in
-//! the worn shape), so its local error is about half the change across the step. The
-//! estimate is measured where it matters, in the pressure:
+//! A step holds the wear rate at its end-of-step value for k half periods: backward Euler in
+//! the worn shape, first order in k. Its error therefore lags the transient: a slow mode of
+//! time constant τ (in half periods) decays by (1 + k/τ)^(−1) per step instead of e^(−k/τ), so
+//! a run with large steps reaches the steady state later than the process does (about
+//! k/(2τ) of the way later; at k = 64 on Example 1, 2–3 % more half periods).
 //!
-//! e ≈ ½ max_i |p_i − p_i,before|,
+//! Step doubling measures and removes that error. A *macro step* is one cycle with factor 2k
+//! (the coarse cycle, computed and thrown away) and two cycles with factor k (the fine ones,
+//! which are the run's recorded steps). Both end at the same half period. With the shapes
+//! g_c and g_f at that point,
 //!
-//! with p_before the pressure of the last step in the same direction. The allowed e is
-//! `tolerance` times the largest pressure of the first solve. After every full cycle k moves
-//! on a ladder of powers of two: halved when the cycle's largest e exceeds the allowance,
-//! doubled when it is below 0.4 of it (both half cycles of a cycle share one k, so that a
-//! cycle stays symmetric, and a factorisation made for one k is reused whenever the run comes
-//! back to it).
+//! - the local error of the fine cycles is about g_f − g_c (first order: the coarse cycle's
+//!   local error is twice the fine pair's), measured where it matters, in the pressure:
+//!   e = max over both half cycles and all points of |p_f − p_c|;
+//! - g = 2 g_f − g_c cancels that leading term (second order), and the next macro step starts
+//!   from it. Its decay factor for a mode is 2/(1 + z/2)² − 1/(1 + z) with z = k/τ: within
+//!   z²/… of e^(−z) for slow modes, and below 1 in magnitude for every z > 0, so the stiff
+//!   modes of a fine mesh stay damped. A macro step whose e exceeds the allowance is not
+//!   extrapolated (the fine cycles alone are backward Euler, stable at any k).
+//!
+//! The allowance is `tolerance` times the largest pressure of the first solve. After every
+//! macro step k moves on a ladder of powers of two (so that a factorisation made for one k
+//! is reused whenever the run comes back to it): halved when e exceeds the allowance,
+//! doubled when e is below a fifth of it (e grows as k², so a doubled k stays within it).
+//!
+//! The recorded steps and the final result are the fine cycles' own (each pressure belongs
+//! to its shape); the extrapolated shape is only where the next macro step starts.
 //!
 //! The run stops when the steady state is reached. A slow transient changes the pressures by
-//! less and less per cycle, so a small change alone does not mean being close: while k is
-//! unchanged the changes of successive cycles shrink by a ratio r, and the distance still to
-//! go is about e_n r/(1 − r) summed geometrically. The run stops when that distance (with
-//! r < 1 measured over two cycles of one k) is below `steady_tolerance` times the peak
-//! pressure and the last cycle's wear is a rigid motion to `steady_tolerance`.
+//! less and less per macro step, so a small change alone does not mean being close: while k
+//! is unchanged the changes of successive macro steps shrink by a ratio r, and the distance
+//! still to go is about Δp r/(1 − r) summed geometrically. The run stops when that distance
+//! is below `steady_tolerance` times the peak pressure and the last cycle's wear is a rigid
+//! motion to `steady_tolerance`.
 
 use serde::{Deserialize, Serialize};
 
@@ -35,17 +50,28 @@ pub struct AdaptiveSpec {
     /// ([`super::SteadyDistance::wear`]; default 1e-3).
     #[serde(default = "default_tolerance")]
     pub steady_tolerance: f64,
-    /// Largest factor k (default 64: larger factors let the contact-zone ends lag; at 32
-    /// elements under the punch k ≤ 4096 stopped 1.7 % of the peak away, k ≤ 64 0.3 %).
+    /// Largest factor k of any step, the coarse cycles' included (default 32, at least 2).
+    /// A run is compared with the steady state once per cycle, so this also sets how
+    /// closely it can tell when the steady state is reached: with 32 (fine cycles of
+    /// k ≤ 16) Example 1 gets within 0.5 % of it in fewer half periods than with the paper's
+    /// schedule on every mesh tried, with 64 within one cycle of it (docs/convergence.md).
     #[serde(default = "default_max_factor")]
     pub max_factor: usize,
+    /// Start each macro step from the Richardson extrapolation 2 g_f − g_c (default true).
+    /// false keeps the fine cycles' first-order shape, to see what the extrapolation buys.
+    #[serde(default = "default_richardson")]
+    pub richardson: bool,
+}
+
+fn default_richardson() -> bool {
+    true
 }
 
 fn default_tolerance() -> f64 {
     1e-3
 }
 fn default_max_factor() -> usize {
-    64
+    32
 }
 
 impl Default for AdaptiveSpec {
@@ -54,6 +80,7 @@ impl Default for AdaptiveSpec {
             tolerance: default_tolerance(),
             steady_tolerance: default_tolerance(),
             max_factor: default_max_factor(),
+            richardson: default_richardson(),
         }
     }
 }
@@ -69,10 +96,10 @@ impl AdaptiveSpec {
                 return Err((key.into(), format!("must lie in (0, 1), got {value}")));
             }
         }
-        if !(1..=super::MAX_FACTOR).contains(&self.max_factor) {
+        if !(2..=super::MAX_FACTOR).contains(&self.max_factor) {
             return Err((
                 "max_factor".into(),
-                format!("must be 1 … {}, got {}", super::MAX_FACTOR, self.max_factor),
+                format!("must be 2 … {}, got {}", super::MAX_FACTOR, self.max_factor),
             ));
         }
         Ok(())
@@ -83,47 +110,46 @@ impl AdaptiveSpec {
 #[derive(Clone, Debug)]
 pub struct Controller {
     spec: AdaptiveSpec,
-    /// Current factor k.
+    /// Factor k of the fine cycles (the coarse cycle's is 2k).
     pub factor: usize,
     /// Allowed local error, MPa (set from the first solve).
     allowance: f64,
-    /// Largest estimate over the current cycle, MPa.
-    cycle_error: f64,
-    /// The previous cycle's estimate and its k.
+    /// The previous macro step's pressure change, MPa, and its k.
     previous: Option<(f64, usize)>,
 }
 
 impl Controller {
-    /// Start with k = 1.
+    /// Start with fine cycles of k = 1.
     pub fn new(spec: AdaptiveSpec) -> Controller {
         Controller {
             spec,
             factor: 1,
             allowance: 0.0,
-            cycle_error: 0.0,
             previous: None,
         }
     }
 
     /// Set the error allowance from the peak pressure (MPa) of the first solve.
     pub fn set_scale(&mut self, peak_pressure: f64) {
-        self.allowance = self.spec.tolerance * peak_pressure;
+        self.allowance = self.allowance.max(self.spec.tolerance * peak_pressure);
     }
 
-    /// Record a step's error estimate (MPa).
-    pub fn record(&mut self, error: f64) {
-        self.cycle_error = self.cycle_error.max(error);
+    /// Whether a macro step with local error estimate `local_error` (MPa) may be
+    /// extrapolated.
+    pub fn accepts(&self, local_error: f64) -> bool {
+        self.spec.richardson && local_error <= self.allowance
     }
 
-    /// At the end of a cycle whose wear is rigid to `wear_distance`: whether the steady
-    /// state is reached; if not, choose k for the next cycle.
-    pub fn end_cycle(&mut self, wear_distance: f64) -> bool {
-        let error = self.cycle_error;
+    /// At the end of a macro step with local error estimate `local_error` and pressure
+    /// change `change` since the last one (both MPa), whose last cycle's wear is rigid to
+    /// `wear_distance`: whether the steady state is reached; if not, choose k for the next
+    /// macro step.
+    pub fn end_macro_step(&mut self, local_error: f64, change: f64, wear_distance: f64) -> bool {
         let peak = self.allowance / self.spec.tolerance;
         if let Some((before, k)) = self.previous {
-            if k == self.factor && before > 0.0 && error < before && self.allowance > 0.0 {
-                let ratio = error / before;
-                let to_go = 2.0 * error * ratio / (1.0 - ratio);
+            if k == self.factor && before > 0.0 && change < before && self.allowance > 0.0 {
+                let ratio = change / before;
+                let to_go = change * ratio / (1.0 - ratio);
                 if to_go <= self.spec.steady_tolerance * peak
                     && wear_distance <= self.spec.steady_tolerance
                 {
@@ -131,15 +157,14 @@ impl Controller {
                 }
             }
         }
-        self.previous = Some((error, self.factor));
+        self.previous = Some((change, self.factor));
         if self.allowance > 0.0 {
-            if error > self.allowance {
+            if local_error > self.allowance {
                 self.factor = (self.factor / 2).max(1);
-            } else if error < 0.4 * self.allowance {
-                self.factor = (2 * self.factor).min(self.spec.max_factor);
+            } else if local_error < 0.2 * self.allowance {
+                self.factor = (2 * self.factor).min(self.spec.max_factor / 2).max(1);
             }
         }
-        self.cycle_error = 0.0;
         false
     }
 }

@@ -57,6 +57,7 @@ impl WearIntegrator {
             .shape_zero_at
             .map(|x0| interpolation_weights(points, x0));
         let mut controller = self.spec.adaptive.map(Controller::new);
+        let mut doubling = controller.as_ref().map(|_| StepDoubling::new(&ws));
         let mut half_periods = 0;
         for step in 1..=self.spec.steps {
             // Odd steps slide in the first direction (contact.direction), even ones back.
@@ -71,16 +72,31 @@ impl WearIntegrator {
                 None => factor(&self.schedule, step),
             };
             let mut count = SolveCount::default();
-            let same = usize::from(direction != Direction::Plus);
-            ws.previous_increment
-                .copy_from_slice(&ws.increment_of[same]);
+            if let Some(d) = doubling.as_mut() {
+                if first_half && d.fine_cycles == 0 {
+                    if d.extrapolate {
+                        // The last macro step's Richardson extrapolation, kept until now so
+                        // that a run ending there reports the fine cycles' own shape.
+                        for (g, c) in shape.iter_mut().zip(&d.shape) {
+                            *g = 2.0 * *g - c;
+                        }
+                        ws.last_shape.copy_from_slice(&shape);
+                        d.extrapolate = false;
+                    }
+                    d.shape.copy_from_slice(&shape);
+                    d.ws.clone_from(&ws);
+                    self.coarse_cycle(solver, 2 * k, d, zero_at.as_deref(), points, &mut count);
+                }
+            }
             // The first half cycle of a cycle sees the wear the second one is about to add
             // (its value of the last cycle): both then see the cycle's end shape.
             let look_ahead = first_half && !monotonic && self.spec.substeps == 0;
-            for (a, w) in ws.ahead.iter_mut().zip(&ws.second_half) {
-                *a = if look_ahead { k as f64 * w } else { 0.0 };
-            }
-            let outcome = self.step(solver, &mut shape, direction, k, &mut ws, &mut count);
+            set_look_ahead(&mut ws, if look_ahead { k } else { 0 });
+            let outcome = if count.first_failure.is_none() {
+                self.step(solver, &mut shape, direction, k, &mut ws, &mut count)
+            } else {
+                StepOutcome::default()
+            };
             hist.solves += count.solves;
             hist.failed_solves += count.failed;
             if let Some(failure) = count.first_failure {
@@ -107,20 +123,10 @@ impl WearIntegrator {
             hist.oscillating_steps += usize::from(outcome.oscillating);
             half_periods += k;
             ws.last_shape.copy_from_slice(&shape);
-            ws.increment_of[same].copy_from_slice(&ws.increment);
             if let Some(c) = controller.as_mut() {
-                let pressure = &ws.solution.pressure;
                 if step <= 2 {
-                    c.set_scale(pressure.iter().fold(0.0, |a: f64, p| a.max(*p)));
-                } else {
-                    // Backward Euler errs by about half the change across the step.
-                    let change = pressure
-                        .iter()
-                        .zip(&ws.pressure_of[same])
-                        .fold(0.0f64, |a, (p, q)| a.max((p - q).abs()));
-                    c.record(0.5 * change);
+                    c.set_scale(ws.solution.pressure.iter().fold(0.0, |a: f64, p| a.max(*p)));
                 }
-                ws.pressure_of[same].copy_from_slice(pressure);
             }
             let (pressure, increment) = (&ws.solution.pressure, &ws.increment);
             let dissipation: f64 = (0..n)
@@ -151,8 +157,14 @@ impl WearIntegrator {
                     shift_to_zero(&mut shape, weights, points);
                     ws.last_shape.copy_from_slice(&shape);
                 }
-                if let Some(c) = controller.as_mut() {
-                    steady_now = step > 2 && c.end_cycle(distance.wear);
+                if let (Some(c), Some(d)) = (controller.as_mut(), doubling.as_mut()) {
+                    d.fine_cycles += 1;
+                    if d.fine_cycles == 2 {
+                        d.fine_cycles = 0;
+                        let (local, change) = d.compare(&hist.p_plus, minus);
+                        d.extrapolate = c.accepts(local);
+                        steady_now = step > 4 && c.end_macro_step(local, change, distance.wear);
+                    }
                 }
             }
             let record = StepRecord {
@@ -185,6 +197,40 @@ impl WearIntegrator {
         }
         hist.shape = shape;
         hist
+    }
+
+    /// The coarse cycle of a macro step ([`super::adaptive`]): one cycle with factor `k`
+    /// from `doubling.shape` in `doubling.ws`, leaving its end shape in `doubling.shape` and
+    /// its pressures in `doubling.pressure`. Nothing of it is recorded; a failed solve is
+    /// counted in `count`.
+    fn coarse_cycle(
+        &self,
+        solver: &mut ContactSolver,
+        k: usize,
+        doubling: &mut StepDoubling,
+        zero_at: Option<&[(usize, f64)]>,
+        points: &ContactPoints,
+        count: &mut SolveCount,
+    ) {
+        let monotonic = self.is_monotonic();
+        let halves = if monotonic { 1 } else { 2 };
+        for half in 0..halves {
+            let direction = if half == 0 {
+                self.first_direction
+            } else {
+                self.first_direction.reversed()
+            };
+            let ws = &mut doubling.ws;
+            set_look_ahead(ws, if half == 0 && !monotonic { k } else { 0 });
+            self.step(solver, &mut doubling.shape, direction, k, ws, count);
+            if count.first_failure.is_some() {
+                return;
+            }
+            doubling.pressure[half].copy_from_slice(&ws.solution.pressure);
+        }
+        if let Some(weights) = zero_at {
+            shift_to_zero(&mut doubling.shape, weights, points);
+        }
     }
 
     /// One step by the scheme the spec names. Leaves in `ws.increment` the wear of one half
@@ -510,4 +556,56 @@ fn interpolation_weights(points: &ContactPoints, x0: f64) -> Vec<(usize, f64)> {
         .min_by(|&i, &j| (xs[i] - x0).abs().total_cmp(&(xs[j] - x0).abs()))
         .unwrap_or(0);
     vec![(nearest, 1.0)]
+}
+
+/// Set the look-ahead of a first half cycle: k times the last second half cycle's wear of
+/// one half period (0 for no look-ahead).
+fn set_look_ahead(ws: &mut Workspace, k: usize) {
+    for (a, w) in ws.ahead.iter_mut().zip(&ws.second_half) {
+        *a = k as f64 * w;
+    }
+}
+
+/// The state of the adaptive schedule's step doubling ([`super::adaptive`]).
+struct StepDoubling {
+    /// Fine cycles done in the current macro step (0 or 1).
+    fine_cycles: usize,
+    /// Whether the next macro step starts from the Richardson extrapolation 2 g_f − g_c.
+    extrapolate: bool,
+    /// The coarse cycle's shape (mm) and pressures of its two half cycles (MPa).
+    shape: Vec<f64>,
+    pressure: [Vec<f64>; 2],
+    /// The last macro step's pressures of the two half cycles (MPa).
+    previous: [Vec<f64>; 2],
+    /// The coarse cycle's copy of the run's buffers.
+    ws: Workspace,
+}
+
+impl StepDoubling {
+    fn new(ws: &Workspace) -> StepDoubling {
+        let n = ws.trial.len();
+        StepDoubling {
+            fine_cycles: 0,
+            extrapolate: false,
+            shape: vec![0.0; n],
+            pressure: [vec![0.0; n], vec![0.0; n]],
+            previous: [vec![0.0; n], vec![0.0; n]],
+            ws: ws.clone(),
+        }
+    }
+
+    /// At the end of a macro step with the fine pressures `plus` and `minus` (empty under
+    /// monotonic sliding): the local error estimate max |p_f − p_c| and the change
+    /// max |p − p_previous| since the last macro step, both MPa.
+    fn compare(&mut self, plus: &[f64], minus: &[f64]) -> (f64, f64) {
+        let (mut local, mut change) = (0.0f64, 0.0f64);
+        for (half, fine) in [plus, minus].into_iter().enumerate() {
+            for (i, &p) in fine.iter().enumerate() {
+                local = local.max((p - self.pressure[half][i]).abs());
+                change = change.max((p - self.previous[half][i]).abs());
+                self.previous[half][i] = p;
+            }
+        }
+        (local, change)
+    }
 }

@@ -23,6 +23,7 @@ pub(super) fn mean_positive(values: &[f64]) -> Option<f64> {
 }
 
 /// What one step did.
+#[derive(Default)]
 pub(super) struct StepOutcome {
     pub iterations: usize,
     /// Final criterion of the step's iteration, percent.
@@ -32,6 +33,7 @@ pub(super) struct StepOutcome {
 }
 
 /// Buffers of one run, sized once so that the step loop does not allocate.
+#[derive(Clone)]
 pub(super) struct Workspace {
     /// ∫|v|ᵃ dτ of one half period for each wear law.
     pub sliding: Vec<f64>,
@@ -50,16 +52,10 @@ pub(super) struct Workspace {
     /// look-ahead of the next first half cycle.
     pub second_half: Vec<f64>,
     pub ahead: Vec<f64>,
-    /// Pressure of the last step in each direction, for the adaptive error estimate, MPa.
-    pub pressure_of: [Vec<f64>; 2],
     /// Last pressure of each direction ('+', '−'), the start of Newton's method.
     pub last_pressure: [Vec<f64>; 2],
     pub trial: Vec<f64>,
     pub increment: Vec<f64>,
-    /// The last wear increment of each direction ('+', '−') and, during a step, that of the
-    /// step's own direction before it.
-    pub increment_of: [Vec<f64>; 2],
-    pub previous_increment: Vec<f64>,
     pub new_increment: Vec<f64>,
     pub residual: Vec<f64>,
     /// The shape after the last step that was kept.
@@ -79,13 +75,10 @@ impl Workspace {
             linear_wear: vec![0.0; n],
             linearised_at: vec![0.0; n],
             last_pressure: [vec![0.0; n], vec![0.0; n]],
-            pressure_of: [vec![0.0; n], vec![0.0; n]],
             second_half: vec![0.0; n],
             ahead: vec![0.0; n],
             trial: vec![0.0; n],
             increment: vec![0.0; n],
-            increment_of: [vec![0.0; n], vec![0.0; n]],
-            previous_increment: vec![0.0; n],
             new_increment: vec![0.0; n],
             residual: vec![0.0; n],
             last_shape: vec![0.0; n],
