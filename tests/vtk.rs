@@ -171,3 +171,101 @@ fn run_with_output_vtk_key_writes_every_state_through_the_binary() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Check the files of one job's output folder: summary.json parses and has `keys`; every CSV
+/// is rectangular with finite numbers (or a direction symbol); every PNG has the figure size;
+/// every state of results.pvd is a consistent .vtu. Returns the number of files checked.
+fn check_output_folder(out: &Path, keys: &[&str]) -> usize {
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
+            .unwrap_or_else(|e| panic!("{}: summary.json: {e}", out.display()));
+    for key in keys {
+        assert!(
+            summary.get(key).is_some(),
+            "{}: no key {key}",
+            out.display()
+        );
+    }
+    let mut checked = 1;
+    for entry in std::fs::read_dir(out).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        match path.extension().and_then(|e| e.to_str()) {
+            Some("csv") => {
+                let text = std::fs::read_to_string(&path).unwrap();
+                let mut lines = text.lines();
+                let columns = lines.next().unwrap().split(',').count();
+                let mut rows = 0;
+                for line in lines {
+                    let cells: Vec<&str> = line.split(',').collect();
+                    assert_eq!(cells.len(), columns, "{name}: {line}");
+                    for c in cells {
+                        let number = c.parse::<f64>().map(f64::is_finite).unwrap_or(false);
+                        assert!(number || c == "+" || c == "−", "{name}: '{c}' in {line}");
+                    }
+                    rows += 1;
+                }
+                assert!(rows > 0, "{name} has no rows");
+            }
+            Some("png") => {
+                let bytes = std::fs::read(&path).unwrap();
+                assert_eq!(&bytes[1..4], b"PNG", "{name}");
+                // IHDR: width and height, big-endian, at bytes 16..24.
+                let size = |k: usize| u32::from_be_bytes(bytes[k..k + 4].try_into().unwrap());
+                assert_eq!((size(16), size(20)), wearfem::plot::SIZE, "{name}");
+            }
+            Some("pvd") => {
+                let pvd = std::fs::read_to_string(&path).unwrap();
+                for set in pvd.split("<DataSet").skip(1) {
+                    check_vtu(&out.join(attribute(set, "file").unwrap()));
+                    checked += 1;
+                }
+            }
+            _ => continue,
+        }
+        checked += 1;
+    }
+    checked
+}
+
+#[test]
+fn every_builtin_example_writes_readable_files_through_the_binary() {
+    // Issue 11: every built-in example through the binary, each job it supports, with the
+    // ParaView files; wear runs shortened to 4 steps (their files have the same form).
+    let dir = std::env::temp_dir().join(format!("wearfem-builtins-{}", std::process::id()));
+    let contact_keys = ["x", "pressure", "gap", "rigid", "residuals", "solve"];
+    let run_keys = ["steps", "final", "snapshots", "steady_distance", "solves"];
+    let steady_keys = ["x", "p_plus", "p_minus", "p_sum", "shape", "status"];
+    for (name, text) in wearfem::examples::EXAMPLES {
+        let jobs: Vec<(&str, &[&str], &[&str])> = if !text.contains("[contact]") {
+            vec![("elastic", &[], &["dofs", "strain_energy", "probes"])]
+        } else if !text.contains("[wear]") {
+            vec![("contact", &[], &contact_keys)]
+        } else {
+            vec![
+                ("contact", &[], &contact_keys),
+                ("run", &["--steps", "4"], &run_keys),
+                ("steady", &[], &steady_keys),
+            ]
+        };
+        for (job, args, keys) in jobs {
+            let out = dir.join(format!("{name}-{job}"));
+            let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+                .args(["--quiet", job, name])
+                .args(args)
+                .arg("--vtk")
+                .arg("--out")
+                .arg(&out)
+                .output()
+                .unwrap();
+            assert!(
+                result.status.success(),
+                "{name} {job}: {}",
+                String::from_utf8_lossy(&result.stderr)
+            );
+            let files = check_output_folder(&out, keys);
+            assert!(files >= 3, "{name} {job}: only {files} files");
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
