@@ -100,8 +100,8 @@ fn fewer_half_periods_than_the_paper(elements: usize) {
         "{elements} elements: {:?}",
         history.stopped
     );
-    // Where it stops by itself: steady_tolerance = 1e-3 is the distance it predicts; the
-    // prediction (a geometric series of the last changes) is not a bound, so check 1 %.
+    // Where it stops by itself: steady_tolerance = 1e-3 of the peak is the distance it
+    // predicts (a geometric series of the last changes, an estimate, not a bound): 0.25 %.
     let (plus, minus, peak) = &reference;
     let worst = history
         .p_plus
@@ -111,7 +111,7 @@ fn fewer_half_periods_than_the_paper(elements: usize) {
         .map(|(a, b)| (a - b).abs())
         .fold(0.0, f64::max);
     assert!(
-        worst < 0.01 * peak,
+        worst < 0.0025 * peak,
         "{elements} elements: stops {worst:.4} MPa from the steady state (peak {peak:.3})"
     );
 }

@@ -21,7 +21,9 @@
 //!   modes of a fine mesh stay damped. A macro step whose e exceeds the allowance is not
 //!   extrapolated (the fine cycles alone are backward Euler, stable at any k).
 //!
-//! The allowance is `tolerance` times the largest pressure of the first solve. After every
+//! The allowance is `tolerance` times the macro step's largest pressure (not the first
+//! solve's: at a sharp corner that one is a singularity that grows with mesh refinement and
+//! wears away). After every
 //! macro step k moves on a ladder of powers of two (so that a factorisation made for one k
 //! is reused whenever the run comes back to it): halved when e exceeds the allowance,
 //! doubled when e is below a fifth of it (e grows as k², so a doubled k stays within it).
@@ -33,7 +35,7 @@
 //! less and less per macro step, so a small change alone does not mean being close: while k
 //! is unchanged the changes of successive macro steps shrink by a ratio r, and the distance
 //! still to go is about Δp r/(1 − r) summed geometrically. The run stops when that distance
-//! is below `steady_tolerance` times the peak pressure and the last cycle's wear is a rigid
+//! is below `steady_tolerance` times the current peak pressure and the last cycle's wear is a rigid
 //! motion to `steady_tolerance`.
 
 use serde::{Deserialize, Serialize};
@@ -42,9 +44,10 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct AdaptiveSpec {
-    /// Local error allowed per step, as a pressure relative to the peak pressure of the
-    /// first solve (dimensionless; default 1e-3).
-    #[serde(default = "default_tolerance")]
+    /// Local error allowed per macro step, as a pressure relative to the macro step's peak
+    /// pressure (dimensionless; default 1e-2). It bounds the first-order error of the fine
+    /// cycles; the extrapolated shape the run continues from is far closer (second order).
+    #[serde(default = "default_local_tolerance")]
     pub tolerance: f64,
     /// The run stops when the last cycle's wear is a rigid motion to this relative accuracy
     /// ([`super::SteadyDistance::wear`]; default 1e-3).
@@ -70,6 +73,9 @@ fn default_richardson() -> bool {
 fn default_tolerance() -> f64 {
     1e-3
 }
+fn default_local_tolerance() -> f64 {
+    1e-2
+}
 fn default_max_factor() -> usize {
     32
 }
@@ -77,7 +83,7 @@ fn default_max_factor() -> usize {
 impl Default for AdaptiveSpec {
     fn default() -> Self {
         AdaptiveSpec {
-            tolerance: default_tolerance(),
+            tolerance: default_local_tolerance(),
             steady_tolerance: default_tolerance(),
             max_factor: default_max_factor(),
             richardson: default_richardson(),
@@ -106,16 +112,18 @@ impl AdaptiveSpec {
     }
 }
 
+/// Macro steps over which the contraction ratio of the transient is measured.
+const RATIO_WINDOW: usize = 4;
+
 /// The controller's state during a run.
 #[derive(Clone, Debug)]
 pub struct Controller {
     spec: AdaptiveSpec,
     /// Factor k of the fine cycles (the coarse cycle's is 2k).
     pub factor: usize,
-    /// Allowed local error, MPa (set from the first solve).
-    allowance: f64,
-    /// The previous macro step's pressure change, MPa, and its k.
-    previous: Option<(f64, usize)>,
+    /// The pressure changes (MPa) of the last macro steps made with the current k, oldest
+    /// first, at most [`RATIO_WINDOW`] + 1 of them.
+    changes: Vec<f64>,
 }
 
 impl Controller {
@@ -124,31 +132,37 @@ impl Controller {
         Controller {
             spec,
             factor: 1,
-            allowance: 0.0,
-            previous: None,
+            changes: Vec::with_capacity(RATIO_WINDOW + 1),
         }
     }
 
-    /// Set the error allowance from the peak pressure (MPa) of the first solve.
-    pub fn set_scale(&mut self, peak_pressure: f64) {
-        self.allowance = self.allowance.max(self.spec.tolerance * peak_pressure);
-    }
-
     /// Whether a macro step with local error estimate `local_error` (MPa) may be
-    /// extrapolated.
-    pub fn accepts(&self, local_error: f64) -> bool {
-        self.spec.richardson && local_error <= self.allowance
+    /// extrapolated, its peak pressure being `peak` (MPa).
+    pub fn accepts(&self, local_error: f64, peak: f64) -> bool {
+        self.spec.richardson && local_error <= self.spec.tolerance * peak
     }
 
-    /// At the end of a macro step with local error estimate `local_error` and pressure
-    /// change `change` since the last one (both MPa), whose last cycle's wear is rigid to
-    /// `wear_distance`: whether the steady state is reached; if not, choose k for the next
-    /// macro step.
-    pub fn end_macro_step(&mut self, local_error: f64, change: f64, wear_distance: f64) -> bool {
-        let peak = self.allowance / self.spec.tolerance;
-        if let Some((before, k)) = self.previous {
-            if k == self.factor && before > 0.0 && change < before && self.allowance > 0.0 {
-                let ratio = change / before;
+    /// At the end of a macro step with local error estimate `local_error`, pressure change
+    /// `change` since the last one and peak pressure `peak` (all MPa), whose last cycle's
+    /// wear is rigid to `wear_distance`: whether the steady state is reached; if not, choose
+    /// k for the next macro step.
+    pub fn end_macro_step(
+        &mut self,
+        local_error: f64,
+        change: f64,
+        peak: f64,
+        wear_distance: f64,
+    ) -> bool {
+        self.changes.push(change);
+        if self.changes.len() > RATIO_WINDOW + 1 {
+            self.changes.remove(0);
+        }
+        if self.changes.len() == RATIO_WINDOW + 1 {
+            // The contraction ratio per macro step over the whole window: one ratio of two
+            // successive changes is noisy (points entering or leaving contact), and a low
+            // one would stop the run early.
+            let ratio = (change / self.changes[0]).powf(1.0 / RATIO_WINDOW as f64);
+            if ratio < 1.0 {
                 let to_go = change * ratio / (1.0 - ratio);
                 if to_go <= self.spec.steady_tolerance * peak
                     && wear_distance <= self.spec.steady_tolerance
@@ -157,13 +171,14 @@ impl Controller {
                 }
             }
         }
-        self.previous = Some((change, self.factor));
-        if self.allowance > 0.0 {
-            if local_error > self.allowance {
-                self.factor = (self.factor / 2).max(1);
-            } else if local_error < 0.2 * self.allowance {
-                self.factor = (2 * self.factor).min(self.spec.max_factor / 2).max(1);
-            }
+        let (factor, allowance) = (self.factor, self.spec.tolerance * peak);
+        if local_error > allowance {
+            self.factor = (self.factor / 2).max(1);
+        } else if local_error < 0.2 * allowance {
+            self.factor = (2 * self.factor).min(self.spec.max_factor / 2).max(1);
+        }
+        if self.factor != factor {
+            self.changes.clear();
         }
         false
     }

@@ -123,11 +123,6 @@ impl WearIntegrator {
             hist.oscillating_steps += usize::from(outcome.oscillating);
             half_periods += k;
             ws.last_shape.copy_from_slice(&shape);
-            if let Some(c) = controller.as_mut() {
-                if step <= 2 {
-                    c.set_scale(ws.solution.pressure.iter().fold(0.0, |a: f64, p| a.max(*p)));
-                }
-            }
             let (pressure, increment) = (&ws.solution.pressure, &ws.increment);
             let dissipation: f64 = (0..n)
                 .map(|i| pressure[i] * increment[i] * points.weight[i])
@@ -161,9 +156,10 @@ impl WearIntegrator {
                     d.fine_cycles += 1;
                     if d.fine_cycles == 2 {
                         d.fine_cycles = 0;
-                        let (local, change) = d.compare(&hist.p_plus, minus);
-                        d.extrapolate = c.accepts(local);
-                        steady_now = step > 4 && c.end_macro_step(local, change, distance.wear);
+                        let (local, change, peak) = d.compare(&hist.p_plus, minus);
+                        d.extrapolate = c.accepts(local, peak);
+                        steady_now =
+                            step > 4 && c.end_macro_step(local, change, peak, distance.wear);
                     }
                 }
             }
@@ -595,17 +591,18 @@ impl StepDoubling {
     }
 
     /// At the end of a macro step with the fine pressures `plus` and `minus` (empty under
-    /// monotonic sliding): the local error estimate max |p_f − p_c| and the change
-    /// max |p − p_previous| since the last macro step, both MPa.
-    fn compare(&mut self, plus: &[f64], minus: &[f64]) -> (f64, f64) {
-        let (mut local, mut change) = (0.0f64, 0.0f64);
+    /// monotonic sliding): the local error estimate max |p_f − p_c|, the change
+    /// max |p − p_previous| since the last macro step and the peak max p, all MPa.
+    fn compare(&mut self, plus: &[f64], minus: &[f64]) -> (f64, f64, f64) {
+        let (mut local, mut change, mut peak) = (0.0f64, 0.0f64, 0.0f64);
         for (half, fine) in [plus, minus].into_iter().enumerate() {
             for (i, &p) in fine.iter().enumerate() {
                 local = local.max((p - self.pressure[half][i]).abs());
                 change = change.max((p - self.previous[half][i]).abs());
+                peak = peak.max(p);
                 self.previous[half][i] = p;
             }
         }
-        (local, change)
+        (local, change, peak)
     }
 }
