@@ -330,7 +330,18 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     } else {
                         "NOT yet at the steady state: run longer, or use `wearfem steady`"
                     };
-                    println!("last cycle: wear per period rigid to {:.2e} (relative), δw = {:.3e} mm, p⁺ + p⁻ spread {:.2} %: {verdict}", d.wear, d.delta_w, 100.0 * d.summed_pressure);
+                    // Under monotonic sliding there is one pressure, not a sum of two.
+                    let summed = if p
+                        .spec
+                        .wear
+                        .as_ref()
+                        .is_some_and(|w| w.sliding == "monotonic")
+                    {
+                        "p"
+                    } else {
+                        "p⁺ + p⁻"
+                    };
+                    println!("last cycle: wear per period rigid to {:.2e} (relative), δw = {:.3e} mm, {summed} spread {:.2} %: {verdict}", d.wear, d.delta_w, 100.0 * d.summed_pressure);
                 }
                 None => println!("no full cycle completed: no final profiles written"),
             }
