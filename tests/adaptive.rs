@@ -125,3 +125,33 @@ fn adaptive_schedule_beats_the_papers_on_the_shipped_mesh() {
 fn adaptive_schedule_beats_the_papers_on_a_refined_mesh() {
     fewer_half_periods_than_the_paper(32);
 }
+
+#[test]
+fn adaptive_schedule_with_a_nonlinear_wear_law_on_a_refined_mesh() {
+    // b = 1.2 (Newton inside every step) at 32 elements under the punch: the run stops by
+    // itself within 0.25 % of the peak of the directly computed steady state (the same
+    // bound, and the same reason, as above).
+    let text = wearfem::examples::refined_punch("punch-b40-b1.2", 32).expect("refines");
+    let text = text.replace("steps = 1700 ", "steps = 20000 ").replace(
+        "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]",
+        "record = []\n\n[wear.adaptive]",
+    );
+    let problem = Problem::from_toml(&text, "b1.2 at 32 elements").unwrap();
+    let history = run(&problem);
+    assert!(
+        matches!(history.stopped, Some((_, StopReason::SteadyState))),
+        "{:?}",
+        history.stopped
+    );
+    let (state, _, _) = driver::steady(&problem).expect("steady");
+    assert_eq!(state.status, SteadyStatus::Solved);
+    let peak = state.p_plus.iter().fold(0.0f64, |a, p| a.max(*p));
+    let worst = history
+        .p_plus
+        .iter()
+        .zip(&state.p_plus)
+        .chain(history.p_minus.iter().zip(&state.p_minus))
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(worst < 0.0025 * peak, "{worst:.4} MPa of {peak:.3}");
+}
