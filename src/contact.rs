@@ -13,12 +13,11 @@
 //! equilibrium (paper eq. 8) is E P + L = 0 with E(k,j) = φ_k(x_j)·(−n_j + s μ τ_j).
 
 use crate::basis::shape_1d;
-use crate::elasticity::ElasticBody;
+use crate::elasticity::{ElasticBody, Row};
 use crate::geometry::Point;
 use crate::loads::trace_dofs;
 use crate::problem::{Problem, ProblemError};
 use crate::quadrature::gauss_lobatto;
-use faer::Mat;
 use serde::Deserialize;
 
 pub mod mortar;
@@ -333,18 +332,51 @@ fn project_on_body2(
     ))
 }
 
-/// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces,
-/// by the Schur complement onto the trace dofs ([`ElasticBody::trace_flexibility`]). It gives
-/// what 2N solves with the body's factorisation give, to round-off (tested in
-/// `elasticity::schur`), and costs less at every size measured: 16 against 27 ms at the 65
-/// points of punch-b40, the same at 129, 3 times less at 513 (docs/performance.md).
-fn flexibility(
+/// Add one body's flexibility at the contact points, projected, to A_nn and A_nt (row-major
+/// N × N): n_iᵀ G_ij n_j and n_iᵀ G_ij τ_j with G = C K⁻¹ Cᵀ by the Schur complement onto the
+/// trace dofs ([`ElasticBody::row_flexibility`]). It gives what 2N solves with the body's
+/// factorisation give, to round-off (tested in `elasticity::schur`), and costs less at every
+/// size measured: 16 against 27 ms at the 65 points of punch-b40, the same at 129, 3 times
+/// less at 513 (docs/performance.md). The traces are projected first, so that the product
+/// has the N × 2N entries needed and not the 2N × 2N of G.
+fn add_flexibility(
     problem: &Problem,
     body: &ElasticBody,
     traces: &[Trace],
-) -> Result<Mat<f64>, ProblemError> {
-    body.trace_flexibility(traces)
-        .map_err(|e| problem.error("contact", e.to_string()))
+    points: &ContactPoints,
+    a_nn: &mut [f64],
+    a_nt: &mut [f64],
+) -> Result<(), ProblemError> {
+    let project = |directions: &[Point]| -> Vec<Row> {
+        traces
+            .iter()
+            .zip(directions)
+            .map(|(tr, v)| {
+                tr.iter()
+                    .flat_map(|&(g, coef)| [(g[0], coef * v[0]), (g[1], coef * v[1])])
+                    .collect()
+            })
+            .collect()
+    };
+    let normal = project(&points.normal);
+    let both: Vec<Row> = normal
+        .iter()
+        .cloned()
+        .chain(project(&points.tangent))
+        .collect();
+    // Column i of [C_n; C_t] K⁻¹ C_nᵀ is row i of [A_nn | A_nt] (K is symmetric).
+    let product = body
+        .row_flexibility(&both, &normal)
+        .map_err(|e| problem.error("contact", e.to_string()))?;
+    let n = points.x.len();
+    for i in 0..n {
+        let column = product.col(i);
+        for j in 0..n {
+            a_nn[i * n + j] += column[j];
+            a_nt[i * n + j] += column[n + j];
+        }
+    }
+    Ok(())
 }
 
 /// Body 2's trace of every constraint, filling in the initial gaps (and, for mortar, the
@@ -515,27 +547,11 @@ impl CondensedContact {
                 }
             }
         }
-        let g1 = flexibility(problem, body1, &traces1)?;
-        let g2 = flexibility(problem, body2, &traces2)?;
         let n = points.x.len();
         let mut a_nn = vec![0.0; n * n];
         let mut a_nt = vec![0.0; n * n];
-        for i in 0..n {
-            for j in 0..n {
-                let block =
-                    |a: usize, b: usize| g1[(2 * i + a, 2 * j + b)] + g2[(2 * i + a, 2 * j + b)];
-                let (ni, nj, tj) = (points.normal[i], points.normal[j], points.tangent[j]);
-                let gn = [
-                    block(0, 0) * nj[0] + block(0, 1) * nj[1],
-                    block(1, 0) * nj[0] + block(1, 1) * nj[1],
-                ];
-                let gt = [
-                    block(0, 0) * tj[0] + block(0, 1) * tj[1],
-                    block(1, 0) * tj[0] + block(1, 1) * tj[1],
-                ];
-                a_nn[i * n + j] = ni[0] * gn[0] + ni[1] * gn[1];
-                a_nt[i * n + j] = ni[0] * gt[0] + ni[1] * gt[1];
-            }
+        for (body, traces) in [(body1, &traces1), (body2, &traces2)] {
+            add_flexibility(problem, body, traces, &points, &mut a_nn, &mut a_nt)?;
         }
         let (rigid_modes, rigid_names, plate_load, plate_resultant) = match &plate {
             None => (vec![], vec![], vec![], ([0.0; 2], 0.0)),

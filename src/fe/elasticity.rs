@@ -27,6 +27,7 @@ use std::sync::OnceLock;
 
 mod dissection;
 mod schur;
+pub use schur::{Row, Trace};
 
 /// Errors of the elasticity stage.
 #[derive(Debug, thiserror::Error)]

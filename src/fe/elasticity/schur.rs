@@ -16,41 +16,52 @@
 //! would cost 3|E|³ for 2N ≈ |E| columns.
 
 use super::{ElasticBody, ElasticityError, Factor};
-use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::matmul::triangular::{matmul, BlockStructure};
+use faer::linalg::triangular_inverse::invert_lower_triangular;
 use faer::perm::PermRef;
 use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
 use faer::sparse::linalg::cholesky::{
     CholeskySymbolicParams, SymbolicCholeskyRaw, SymmetricOrdering,
 };
 use faer::sparse::linalg::SupernodalThreshold;
-use faer::{Mat, Par};
+use faer::{Accum, Mat, MatRef, Par};
 
 /// One point's displacement as a combination of global dofs: (x dof, z dof, coefficient).
 pub type Trace = Vec<([usize; 2], f64)>;
+
+/// One row of a constraint matrix: a displacement as a combination of global dofs
+/// (dof, coefficient).
+pub type Row = Vec<(usize, f64)>;
 
 impl ElasticBody {
     /// Flexibility G (mm/N, 2N × 2N, row 2i + c = component c of point i) of this body at the
     /// points whose displacements are `traces`: G = C K⁻¹ Cᵀ by the Schur complement onto the
     /// trace dofs (module docs). Fixed dofs do not move and are left out.
     pub fn trace_flexibility(&self, traces: &[Trace]) -> Result<Mat<f64>, ElasticityError> {
+        let rows: Vec<Row> = (0..2 * traces.len())
+            .map(|r| traces[r / 2].iter().map(|&(g, c)| (g[r % 2], c)).collect())
+            .collect();
+        self.row_flexibility(&rows, &rows)
+    }
+
+    /// A K⁻¹ Bᵀ (mm/N, `a.len()` × `b.len()`) for constraint rows A and B, by the Schur
+    /// complement onto the dofs they touch (module docs). Fixed dofs do not move and are left
+    /// out. Each product is one row of one matrix: projecting the traces onto the directions
+    /// needed first (normals, tangents) saves the 2N × 2N flexibility and its products.
+    pub fn row_flexibility(&self, a: &[Row], b: &[Row]) -> Result<Mat<f64>, ElasticityError> {
         let n = self.dofs.n_dofs();
-        let rows = 2 * traces.len();
         // Position of each trace dof in E (usize::MAX: not a trace dof).
         let mut position = vec![usize::MAX; n];
         let mut trace_dofs = Vec::new();
-        for tr in traces {
-            for &(g, _) in tr {
-                for &d in &g {
-                    if !self.fixed[d] && position[d] == usize::MAX {
-                        position[d] = trace_dofs.len();
-                        trace_dofs.push(d);
-                    }
-                }
+        for &(d, _) in b.iter().chain(a).flatten() {
+            if !self.fixed[d] && position[d] == usize::MAX {
+                position[d] = trace_dofs.len();
+                trace_dofs.push(d);
             }
         }
         let ne = trace_dofs.len();
         if ne == 0 {
-            return Ok(Mat::zeros(rows, rows));
+            return Ok(Mat::zeros(a.len(), b.len()));
         }
         let forward = self.constrained_order(&position, &trace_dofs);
         let mut inverse = vec![0usize; n];
@@ -67,95 +78,147 @@ impl ElasticBody {
         let perm = PermRef::new_checked(&forward, &inverse, n);
         let whole = Factor::new(&self.matrix, SymmetricOrdering::Custom(perm), params)
             .ok_or_else(singular)?;
-        let SymbolicCholeskyRaw::Supernodal(supernodal) = whole.symbolic.raw() else {
-            return Err(singular());
-        };
-        let factor = SupernodalLltRef::new(supernodal, &whole.values);
-        let first = n - ne;
-        let mut l_ee = Mat::<f64>::zeros(ne, ne);
-        for s in 0..supernodal.n_supernodes() {
-            let node = factor.supernode(s);
-            let (start, block) = (node.start(), node.val());
-            let ncols = block.ncols();
-            if start + ncols <= first {
-                continue;
-            }
-            let pattern = node.pattern();
-            for c in 0..ncols {
-                let col = start + c;
-                if col < first {
-                    continue;
-                }
-                for r in c..block.nrows() {
-                    let row = if r < ncols {
-                        start + r
-                    } else {
-                        pattern[r - ncols]
-                    };
-                    l_ee[(row - first, col - first)] = block[(r, c)];
-                }
-            }
-        }
+        let s_inverse = schur_inverse(&whole, ne).ok_or_else(singular)?;
         // The factorisation serves the body's later solves too (one factorisation, not two).
         self.keep_factor(whole);
-        Ok(trace_product(&schur_inverse(l_ee), traces, |d| {
-            (position[d] != usize::MAX).then(|| inverse[d] - first)
-        }))
+        let first = n - ne;
+        let column = |d: usize| (position[d] != usize::MAX).then(|| inverse[d] - first);
+        Ok(row_product(s_inverse, a, b, column))
     }
 }
 
-/// S⁻¹ from the Cholesky factor L of S, both triangles filled.
-fn schur_inverse(l: Mat<f64>) -> Mat<f64> {
-    let n = l.nrows();
-    let mut inverse = Mat::<f64>::zeros(n, n);
-    let mut buffer =
-        MemBuffer::new(faer::linalg::cholesky::llt::inverse::inverse_scratch::<f64>(n, Par::Seq));
-    faer::linalg::cholesky::llt::inverse::inverse(
-        inverse.as_mut(),
-        l.as_ref(),
+/// S⁻¹ (both triangles) from the trailing ne × ne block of the factor, the Cholesky factor L
+/// of the Schur complement S; None if the factor is not supernodal.
+fn schur_inverse(whole: &Factor, ne: usize) -> Option<Mat<f64>> {
+    let SymbolicCholeskyRaw::Supernodal(supernodal) = whole.symbolic.raw() else {
+        return None;
+    };
+    let factor = SupernodalLltRef::new(supernodal, &whole.values);
+    let first = supernodal.nrows() - ne;
+    let last = factor.supernode(supernodal.n_supernodes() - 1);
+    let mut l_inverse = Mat::<f64>::zeros(ne, ne);
+    if last.start() == first && last.val().ncols() == ne {
+        // The trace block is one supernode (dense, as it is once the interior is eliminated):
+        // invert it where it is instead of copying it out.
+        invert_lower_triangular(l_inverse.as_mut(), last.val().subrows(0, ne), Par::Seq);
+    } else {
+        let l_ee = trailing_block(&factor, supernodal.n_supernodes(), first, ne);
+        invert_lower_triangular(l_inverse.as_mut(), l_ee.as_ref(), Par::Seq);
+    }
+    // S⁻¹ = L⁻ᵀ L⁻¹, lower triangle; faer's `llt::inverse` does the same with one more
+    // ne × ne buffer.
+    let mut s_inverse = Mat::<f64>::zeros(ne, ne);
+    matmul(
+        s_inverse.as_mut(),
+        BlockStructure::TriangularLower,
+        Accum::Replace,
+        l_inverse.transpose(),
+        BlockStructure::TriangularUpper,
+        l_inverse.as_ref(),
+        BlockStructure::TriangularLower,
+        1.0,
         Par::Seq,
-        MemStack::new(&mut buffer),
     );
-    // Only the lower triangle is written.
-    for j in 0..n {
-        for i in 0..j {
-            inverse[(i, j)] = inverse[(j, i)];
-        }
-    }
-    inverse
+    drop(l_inverse);
+    mirror_lower(&mut s_inverse);
+    Some(s_inverse)
 }
 
-/// G = C S⁻¹ Cᵀ (2N × 2N) for the traces' rows of C; `column(d)` is the position of global
-/// dof d among S's unknowns, None for a dof left out (fixed).
-fn trace_product(
-    s_inverse: &Mat<f64>,
-    traces: &[Trace],
-    column: impl Fn(usize) -> Option<usize>,
+/// The block of rows and columns `first..first + ne` of the factor, copied out.
+fn trailing_block(
+    factor: &SupernodalLltRef<'_, usize, f64>,
+    supernodes: usize,
+    first: usize,
+    ne: usize,
 ) -> Mat<f64> {
-    let rows = 2 * traces.len();
-    let c_rows: Vec<Vec<(usize, f64)>> = (0..rows)
-        .map(|r| {
-            traces[r / 2]
-                .iter()
-                .filter_map(|&(g, coef)| column(g[r % 2]).map(|e| (e, coef)))
-                .collect()
-        })
-        .collect();
-    // T = S⁻¹ Cᵀ, column by column (S⁻¹ is symmetric: its column e is its row e).
-    let ne = s_inverse.nrows();
-    let mut t = Mat::<f64>::zeros(ne, rows);
-    for (r, entries) in c_rows.iter().enumerate() {
-        let mut target = t.col_mut(r);
-        for &(e, coef) in entries {
-            let source = s_inverse.col(e);
-            for i in 0..ne {
-                target[i] += coef * source[i];
+    let mut l_ee = Mat::<f64>::zeros(ne, ne);
+    for s in 0..supernodes {
+        let node = factor.supernode(s);
+        let (start, block) = (node.start(), node.val());
+        let ncols = block.ncols();
+        if start + ncols <= first {
+            continue;
+        }
+        let pattern = node.pattern();
+        for c in 0..ncols {
+            let col = start + c;
+            if col < first {
+                continue;
+            }
+            for r in c..block.nrows() {
+                let row = if r < ncols {
+                    start + r
+                } else {
+                    pattern[r - ncols]
+                };
+                l_ee[(row - first, col - first)] = block[(r, c)];
             }
         }
     }
-    Mat::from_fn(rows, rows, |r, s| {
-        c_rows[r].iter().map(|&(e, coef)| coef * t[(e, s)]).sum()
+    l_ee
+}
+
+/// Copy the lower triangle of a square matrix onto its upper one, in tiles that stay in
+/// the cache (element by element, every write of a column-major transpose misses).
+fn mirror_lower(m: &mut Mat<f64>) {
+    const TILE: usize = 32;
+    let n = m.nrows();
+    for jb in (0..n).step_by(TILE) {
+        for ib in (0..jb + 1).step_by(TILE) {
+            for j in jb..(jb + TILE).min(n) {
+                for i in ib..(ib + TILE).min(j) {
+                    m[(i, j)] = m[(j, i)];
+                }
+            }
+        }
+    }
+}
+
+/// A S⁻¹ Bᵀ for the rows A and B; `column(d)` is the position of global dof d among S's
+/// unknowns, None for a dof left out (fixed).
+fn row_product(
+    s_inverse: Mat<f64>,
+    a: &[Row],
+    b: &[Row],
+    column: impl Fn(usize) -> Option<usize>,
+) -> Mat<f64> {
+    let restrict = |rows: &[Row]| -> Vec<Vec<(usize, f64)>> {
+        rows.iter()
+            .map(|row| {
+                row.iter()
+                    .filter(|e| e.1 != 0.0)
+                    .filter_map(|&(d, coef)| column(d).map(|e| (e, coef)))
+                    .collect()
+            })
+            .collect()
+    };
+    let (a, b) = (restrict(a), restrict(b));
+    // T = S⁻¹ Bᵀ, column by column (S⁻¹ is symmetric: its column e is its row e).
+    let ne = s_inverse.nrows();
+    let mut t = Mat::<f64>::zeros(ne, b.len());
+    for (r, entries) in b.iter().enumerate() {
+        let target = t.col_mut(r).try_as_col_major_mut().expect("contiguous");
+        let target = target.as_slice_mut();
+        for &(e, coef) in entries {
+            let source = column_slice(s_inverse.as_ref(), e);
+            for (x, s) in target.iter_mut().zip(source) {
+                *x += coef * s;
+            }
+        }
+    }
+    drop(s_inverse);
+    Mat::from_fn(a.len(), b.len(), |r, s| {
+        let col = column_slice(t.as_ref(), s);
+        a[r].iter().map(|&(e, coef)| coef * col[e]).sum()
     })
+}
+
+/// Column `j` of a column-major matrix as a slice.
+fn column_slice(m: MatRef<'_, f64>, j: usize) -> &[f64] {
+    m.col(j)
+        .try_as_col_major()
+        .expect("an owned matrix has contiguous columns")
+        .as_slice()
 }
 
 impl ElasticBody {
