@@ -103,7 +103,8 @@ pub struct ElasticBody {
     fixed: Vec<bool>,
     /// The Cholesky factorisation of `matrix`, made on first use.
     factor: OnceLock<Factor>,
-    /// The condensed stiffness matrix (N/mm), fixed rows and columns replaced by the identity.
+    /// The condensed stiffness matrix (N/mm), fixed rows and columns replaced by the identity;
+    /// its lower triangle only.
     matrix: SparseColMat<usize, f64>,
     /// Size figures of the set-up.
     pub info: SetupInfo,
@@ -317,7 +318,8 @@ impl ElasticBody {
             total_dofs: n + mesh.elements.len() * 2 * basis.n_internal(),
             condensed_dofs: n,
             distinct_elements: types.len(),
-            nonzeros: values.len(),
+            // Both triangles, as before only the lower one was stored.
+            nonzeros: 2 * values.len() - n,
         };
         let symbolic =
             SymbolicSparseColMat::new_checked(n, n, pattern.col_ptr, None, pattern.row_idx);
@@ -487,11 +489,15 @@ fn assemble(
         let s = &types[ty].condensed;
         for (cb, col_range) in entity_local.iter().enumerate() {
             for (rb, row_range) in entity_local.iter().enumerate() {
+                if ed.entities[rb] < ed.entities[cb] {
+                    continue;
+                }
                 for lc in col_range.clone() {
                     let gc = ed.global[lc];
-                    let start = pattern.block_start(gc, ed.entities[cb], ed.entities[rb]);
-                    for (i, lr) in row_range.clone().enumerate() {
-                        values[start + i] += ed.sign[lr] * ed.sign[lc] * s[(lr, lc)];
+                    let (start, first) = pattern.block_start(gc, ed.entities[cb], ed.entities[rb]);
+                    let rows = row_range.clone().skip(first);
+                    for (value, lr) in values[start..].iter_mut().zip(rows) {
+                        *value += ed.sign[lr] * ed.sign[lc] * s[(lr, lc)];
                     }
                 }
             }

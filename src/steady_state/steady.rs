@@ -11,7 +11,7 @@
 //! The system is solved by a semismooth Newton (primal–dual active-set) iteration on both
 //! active sets at once: for b = 1 each iteration is one linear solve, and the iteration
 //! stops when neither active set changes. The solve eliminates the system's identity and
-//! diagonal blocks first ([`step`]), which leaves a dense system in about N unknowns instead
+//! diagonal blocks first (`step`), which leaves a dense system in about N unknowns instead
 //! of 3N + 3m. The paper's §6 reaches the same state by a spline
 //! optimisation (16 design variables, finite-difference gradients) or by a penalty iteration of
 //! 300–500 steps; here the state is exact up to round-off and the discretisation.
