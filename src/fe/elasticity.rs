@@ -126,7 +126,7 @@ impl Factor {
     ) -> Option<Factor> {
         let symbolic =
             factorize_symbolic_cholesky(matrix.symbolic(), Side::Lower, ordering, params).ok()?;
-        let mut values = vec![0.0; symbolic.len_val()];
+        let mut values = large_zeroed(symbolic.len_val());
         let mut buffer = MemBuffer::new(
             symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default()),
         );
@@ -142,6 +142,33 @@ impl Factor {
             )
             .ok()?;
         Some(Factor { symbolic, values })
+    }
+}
+
+/// A vector of `len` zeros whose memory the kernel may back with 2 MB pages. The factor of a
+/// body at 513 contact points has 5 million entries: 40 MB, ten thousand 4 kB page faults
+/// on first touch, each a few µs on this virtual machine; with 2 MB pages twenty.
+fn large_zeroed(len: usize) -> Vec<f64> {
+    let mut v = Vec::<f64>::with_capacity(len);
+    #[cfg(target_os = "linux")]
+    advise_huge_pages(v.as_mut_ptr() as usize, len * std::mem::size_of::<f64>());
+    v.resize(len, 0.0);
+    v
+}
+
+/// Ask for transparent huge pages on the 2 MB-aligned part of `bytes` bytes at `start`
+/// (not yet touched). Only advice: it changes no contents, and a kernel that ignores it
+/// (THP off) or fails it leaves 4 kB pages.
+#[cfg(target_os = "linux")]
+fn advise_huge_pages(start: usize, bytes: usize) {
+    const HUGE: usize = 2 << 20;
+    let (first, end) = (start.next_multiple_of(HUGE), (start + bytes) / HUGE * HUGE);
+    if end > first {
+        // SAFETY: the range lies inside one live allocation of ours, and MADV_HUGEPAGE
+        // neither unmaps it nor changes what it holds.
+        unsafe {
+            libc::madvise(first as *mut libc::c_void, end - first, libc::MADV_HUGEPAGE);
+        }
     }
 }
 
