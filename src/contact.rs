@@ -13,16 +13,18 @@
 //! equilibrium (paper eq. 8) is E P + L = 0 with E(k,j) = φ_k(x_j)·(−n_j + s μ τ_j).
 
 use crate::basis::shape_1d;
-use crate::elasticity::{ElasticBody, Row};
+use crate::elasticity::ElasticBody;
 use crate::geometry::Point;
 use crate::loads::trace_dofs;
 use crate::problem::{Problem, ProblemError};
 use crate::quadrature::gauss_lobatto;
 use serde::Deserialize;
 
+mod flexibility;
 pub mod mortar;
 mod plate;
 pub mod zone;
+use flexibility::add_flexibility;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
 pub use zone::EdgeEnd;
@@ -330,53 +332,6 @@ fn project_on_body2(
             .filter(|x| x.1 != 0.0)
             .collect(),
     ))
-}
-
-/// Add one body's flexibility at the contact points, projected, to A_nn and A_nt (row-major
-/// N × N): n_iᵀ G_ij n_j and n_iᵀ G_ij τ_j with G = C K⁻¹ Cᵀ by the Schur complement onto the
-/// trace dofs ([`ElasticBody::row_flexibility`]). It gives what 2N solves with the body's
-/// factorisation give, to round-off (tested in `elasticity::schur`), and costs less at every
-/// size measured: 16 against 27 ms at the 65 points of punch-b40, the same at 129, 3 times
-/// less at 513 (docs/performance.md). The traces are projected first, so that the product
-/// has the N × 2N entries needed and not the 2N × 2N of G.
-fn add_flexibility(
-    problem: &Problem,
-    body: &ElasticBody,
-    traces: &[Trace],
-    points: &ContactPoints,
-    a_nn: &mut [f64],
-    a_nt: &mut [f64],
-) -> Result<(), ProblemError> {
-    let project = |directions: &[Point]| -> Vec<Row> {
-        traces
-            .iter()
-            .zip(directions)
-            .map(|(tr, v)| {
-                tr.iter()
-                    .flat_map(|&(g, coef)| [(g[0], coef * v[0]), (g[1], coef * v[1])])
-                    .collect()
-            })
-            .collect()
-    };
-    let normal = project(&points.normal);
-    let both: Vec<Row> = normal
-        .iter()
-        .cloned()
-        .chain(project(&points.tangent))
-        .collect();
-    // Column i of [C_n; C_t] K⁻¹ C_nᵀ is row i of [A_nn | A_nt] (K is symmetric).
-    let product = body
-        .row_flexibility(&both, &normal)
-        .map_err(|e| problem.error("contact", e.to_string()))?;
-    let n = points.x.len();
-    for i in 0..n {
-        let column = product.col(i);
-        for j in 0..n {
-            a_nn[i * n + j] += column[j];
-            a_nt[i * n + j] += column[n + j];
-        }
-    }
-    Ok(())
 }
 
 /// Body 2's trace of every constraint, filling in the initial gaps (and, for mortar, the
