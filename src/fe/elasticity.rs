@@ -145,16 +145,25 @@ impl Factor {
     }
 }
 
-/// A vector of `len` zeros whose memory the kernel may back with 2 MB pages. The factor of a
-/// body at 513 contact points has 5 million entries: 40 MB, ten thousand 4 kB page faults
-/// on first touch, each a few µs on this virtual machine; with 2 MB pages twenty.
+/// A vector of `len` zeros whose memory the kernel may back with 2 MB pages when it is
+/// large. The factor of a body at 513 contact points has 5 million entries: 40 MB, ten
+/// thousand 4 kB page faults on first touch, each a few µs on this virtual machine; with 2 MB
+/// pages twenty. Below [`HUGE_PAGES_FROM`] bytes the advice costs more than it saves (each
+/// 2 MB page is zeroed whole): punch-b40's 2.4 MB factor, made afresh in every run of a
+/// benchmark, took 3 ms longer per 1700-step run with it.
 fn large_zeroed(len: usize) -> Vec<f64> {
     let mut v = Vec::<f64>::with_capacity(len);
+    let bytes = len * std::mem::size_of::<f64>();
     #[cfg(target_os = "linux")]
-    advise_huge_pages(v.as_mut_ptr() as usize, len * std::mem::size_of::<f64>());
+    if bytes >= HUGE_PAGES_FROM {
+        advise_huge_pages(v.as_mut_ptr() as usize, bytes);
+    }
     v.resize(len, 0.0);
     v
 }
+
+/// Size in bytes from which [`large_zeroed`] asks for huge pages.
+const HUGE_PAGES_FROM: usize = 16 << 20;
 
 /// Ask for transparent huge pages on the 2 MB-aligned part of `bytes` bytes at `start`
 /// (not yet touched). Only advice: it changes no contents, and a kernel that ignores it
