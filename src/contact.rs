@@ -18,12 +18,13 @@ use crate::geometry::Point;
 use crate::loads::trace_dofs;
 use crate::problem::{Problem, ProblemError};
 use crate::quadrature::gauss_lobatto;
-use faer::Mat;
 use serde::Deserialize;
 
+mod flexibility;
 pub mod mortar;
 mod plate;
 pub mod zone;
+use flexibility::add_flexibility;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
 pub use zone::EdgeEnd;
@@ -333,20 +334,6 @@ fn project_on_body2(
     ))
 }
 
-/// Flexibility G (2N × 2N, component-major per point: row 2i + c) of one body at its traces,
-/// by the Schur complement onto the trace dofs ([`ElasticBody::trace_flexibility`]). It gives
-/// what 2N solves with the body's factorisation give, to round-off (tested in
-/// `elasticity::schur`), and costs less at every size measured: 16 against 27 ms at the 65
-/// points of punch-b40, the same at 129, 3 times less at 513 (docs/performance.md).
-fn flexibility(
-    problem: &Problem,
-    body: &ElasticBody,
-    traces: &[Trace],
-) -> Result<Mat<f64>, ProblemError> {
-    body.trace_flexibility(traces)
-        .map_err(|e| problem.error("contact", e.to_string()))
-}
-
 /// Body 2's trace of every constraint, filling in the initial gaps (and, for mortar, the
 /// weights D_ii) of `points`.
 fn body2_traces(
@@ -515,27 +502,11 @@ impl CondensedContact {
                 }
             }
         }
-        let g1 = flexibility(problem, body1, &traces1)?;
-        let g2 = flexibility(problem, body2, &traces2)?;
         let n = points.x.len();
         let mut a_nn = vec![0.0; n * n];
         let mut a_nt = vec![0.0; n * n];
-        for i in 0..n {
-            for j in 0..n {
-                let block =
-                    |a: usize, b: usize| g1[(2 * i + a, 2 * j + b)] + g2[(2 * i + a, 2 * j + b)];
-                let (ni, nj, tj) = (points.normal[i], points.normal[j], points.tangent[j]);
-                let gn = [
-                    block(0, 0) * nj[0] + block(0, 1) * nj[1],
-                    block(1, 0) * nj[0] + block(1, 1) * nj[1],
-                ];
-                let gt = [
-                    block(0, 0) * tj[0] + block(0, 1) * tj[1],
-                    block(1, 0) * tj[0] + block(1, 1) * tj[1],
-                ];
-                a_nn[i * n + j] = ni[0] * gn[0] + ni[1] * gn[1];
-                a_nt[i * n + j] = ni[0] * gt[0] + ni[1] * gt[1];
-            }
+        for (body, traces) in [(body1, &traces1), (body2, &traces2)] {
+            add_flexibility(problem, body, traces, &points, &mut a_nn, &mut a_nt)?;
         }
         let (rigid_modes, rigid_names, plate_load, plate_resultant) = match &plate {
             None => (vec![], vec![], vec![], ([0.0; 2], 0.0)),

@@ -32,7 +32,9 @@ pub fn dot(a: &[f64], b: &[f64]) -> f64 {
 #[derive(Default)]
 pub struct DenseLu {
     n: usize,
-    /// The matrix as written by the caller (row-major).
+    /// The matrix as written by the caller (row-major); after [`DenseLu::factor_in_place`]
+    /// the same n² numbers of the factors in the order the single-vector sweeps read them
+    /// (see [`DenseLu::pack`]).
     input: Vec<f64>,
     /// L and U, column-major.
     lu: Vec<f64>,
@@ -92,10 +94,30 @@ impl DenseLu {
             stack,
             Default::default(),
         );
+        self.pack();
         (0..n).all(|k| {
             let pivot = self.lu[k * n + k];
             pivot != 0.0 && pivot.is_finite()
         })
+    }
+
+    /// Copy the factors into `input` as the sweeps of [`DenseLu::solve_in_place`] read them:
+    /// the strict lower part of each column of L, first to last, then each column of U down
+    /// to its diagonal, last to first. Read in place, the two sweeps take every other run of
+    /// each column-major column (the other triangle's part lies between): at 1025 contact
+    /// points, where the factors of both sliding directions and their gap matrices (34 MB)
+    /// no longer fit the 32 MB cache, one contiguous stream per sweep is a third faster,
+    /// with the same operations in the same order.
+    fn pack(&mut self) {
+        let n = self.n;
+        self.input.clear();
+        for j in 0..n {
+            self.input
+                .extend_from_slice(&self.lu[j * n + j + 1..(j + 1) * n]);
+        }
+        for j in (0..n).rev() {
+            self.input.extend_from_slice(&self.lu[j * n..j * n + j + 1]);
+        }
     }
 
     /// The smallest |u_kk| of the factorisation (0 for an empty matrix).
@@ -135,20 +157,24 @@ impl DenseLu {
         for i in 0..n {
             scratch[i] = b[self.perm[i]];
         }
-        let a = &self.lu;
+        let (lower, upper) = self.input.split_at(n * (n - n.min(1)) / 2);
+        let mut columns = lower;
         for j in 0..n {
+            let (column, rest) = columns.split_at(n - j - 1);
+            columns = rest;
             let xj = scratch[j];
             if xj != 0.0 {
-                let column = &a[j * n + j + 1..(j + 1) * n];
                 for (x, l) in scratch[j + 1..n].iter_mut().zip(column) {
                     *x -= l * xj;
                 }
             }
         }
+        let mut columns = upper;
         for j in (0..n).rev() {
-            scratch[j] /= a[j * n + j];
+            let (column, rest) = columns.split_at(j + 1);
+            columns = rest;
+            scratch[j] /= column[j];
             let xj = scratch[j];
-            let column = &a[j * n..j * n + j];
             for (x, u) in scratch[..j].iter_mut().zip(column) {
                 *x -= u * xj;
             }
