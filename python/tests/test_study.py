@@ -109,3 +109,13 @@ def test_without_pandas_a_dict_of_arrays(punch, monkeypatch):
     table = wearfem.study(punch, {"contact.friction": [0.1, 0.2]})
     assert isinstance(table, dict)
     assert isinstance(table["peak_p_plus"], np.ndarray) and table["peak_p_plus"].shape == (2,)
+
+
+def test_dask_token_names_the_problem_without_rebuilding_it(punch):
+    # Dask's default token pickles and unpickles an argument twice, rebuilding the problem;
+    # ours is built from the text, file and overrides, and tells variants apart.
+    tokenize = pytest.importorskip("dask.base").tokenize
+    a = punch.with_overrides({"contact.friction": 0.1})
+    assert tokenize(a) == tokenize(punch.with_overrides({"contact.friction": 0.1}))
+    assert tokenize(a) != tokenize(punch.with_overrides({"contact.friction": 0.2}))
+    assert tokenize(a) != tokenize(punch)
