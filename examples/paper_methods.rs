@@ -39,6 +39,17 @@ fn difference(a: &MethodOutcome, exact: &MethodOutcome) -> (f64, f64) {
     (dp / peak, ds / (hi - lo))
 }
 
+/// The condensed contact of built-in example `name` and its wear per half period
+/// ((β̃ ∫|v|ᵃ dτ, b) per law).
+fn load(name: &str) -> (CondensedContact, Vec<(f64, f64)>) {
+    let p = Problem::from_toml(wearfem::examples::example(name).unwrap(), name).unwrap();
+    let (contact, _, _) = CondensedContact::build(&p).unwrap();
+    let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
+        .unwrap()
+        .half_period_wear();
+    (contact, terms)
+}
+
 /// The spline method with the paper's 17 points and with every interval bisected once and
 /// twice (33, 65 points), exact sensitivities: how far the corner error is the spline's
 /// resolution.
@@ -46,11 +57,7 @@ fn spline_study() {
     println!("| case | spline points | Newton steps | contact solves | max Δp / peak | at x (mm) | max Δshape / range | eq. 49 residual |");
     println!("|---|---|---|---|---|---|---|---|");
     for name in ["punch-a", "punch-b40"] {
-        let p = Problem::from_toml(wearfem::examples::example(name).unwrap(), name).unwrap();
-        let (contact, _, _) = CondensedContact::build(&p).unwrap();
-        let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
-            .unwrap()
-            .half_period_wear();
+        let (contact, terms) = load(name);
         let exact =
             solve_steady(&contact, &terms, SteadyMethod::Exact, Default::default()).unwrap();
         // The ends of the zone where both half cycles are in contact (the paper's x_cl, x_cr).
@@ -184,11 +191,7 @@ fn main() {
     println!("| case | method | iterations | contact solves | median time, ms | max δw, mm | max δw / wear per period | eq. 49 residual | max Δp / peak | max Δshape / range |");
     println!("|---|---|---|---|---|---|---|---|---|---|");
     for name in ["punch-a", "punch-b40"] {
-        let p = Problem::from_toml(wearfem::examples::example(name).unwrap(), name).unwrap();
-        let (contact, _, _) = CondensedContact::build(&p).unwrap();
-        let terms = WearIntegrator::new(p.spec.wear.as_ref().unwrap())
-            .unwrap()
-            .half_period_wear();
+        let (contact, terms) = load(name);
         // β̃ 2u₀ (p⁺ + p⁻) with p⁺ + p⁻ = 2p̃ = 33.332 MPa.
         let wear_per_period = terms.iter().map(|t| t.0).sum::<f64>() * 33.332;
         let exact =
