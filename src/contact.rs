@@ -2,7 +2,8 @@
 //! (mortar traces weighted over the overlapping segments, [`mortar`]'s docs give the method;
 //! or one partner point, "collocation"), the rigid loading plate, and the flexibility (Green)
 //! matrices that reduce both finite element models to the contact points once and for all.
-//! Contact zones cut by the end of the named edge are found by [`zone`]'s rules.
+//! Contact zones cut by the end of the named edge are found by [`zone`]'s rules, zones that
+//! body 2's mesh does not resolve by [`resolution`]'s.
 //!
 //! Sign conventions (paper eq. 2–3, 42): n_c is body 1's outward normal (into body 2), τ is n_c
 //! turned by +90° (τ = +e_x under a flat punch). The force of body 2 on body 1 at point i is
@@ -23,10 +24,12 @@ use serde::Deserialize;
 mod flexibility;
 pub mod mortar;
 mod plate;
+pub mod resolution;
 pub mod zone;
 use flexibility::add_flexibility;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
+pub use resolution::{CoarseZone, PointResolution};
 pub use zone::EdgeEnd;
 
 /// `[contact]` section of a problem file.
@@ -138,6 +141,9 @@ pub struct CondensedContact {
     /// For the first and the last contact point: whether body 1's surface continues beyond
     /// that end of the named contact edge (see [`CondensedContact::edge_ends_in_contact`]).
     pub surface_continues: [bool; 2],
+    /// Both meshes' element lengths at each contact point (see
+    /// [`CondensedContact::coarse_partner_zones`]).
+    pub resolution: Vec<PointResolution>,
 }
 
 fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize, bool)> {
@@ -502,6 +508,8 @@ impl CondensedContact {
                 }
             }
         }
+        let resolution =
+            resolution::point_resolution(body1, &chain, body2, &edge2, &points.x, &points.normal);
         let n = points.x.len();
         let mut a_nn = vec![0.0; n * n];
         let mut a_nt = vec![0.0; n * n];
@@ -523,6 +531,7 @@ impl CondensedContact {
             plate_load,
             plate_resultant,
             surface_continues: zone::surface_continues(body1, &chain),
+            resolution,
         };
         Ok(contact)
     }
@@ -589,6 +598,14 @@ impl CondensedContact {
     /// pressure exceeds 1e-6 of the profile's peak (the solvers' round-off is far below).
     pub fn edge_ends_in_contact(&self, pressures: &[&[f64]]) -> Vec<EdgeEnd> {
         zone::ends_in_contact(self, pressures)
+    }
+
+    /// The contact zones of `pressures` (MPa, one value per point; a point is in contact above
+    /// 1e-6 of the profile's peak) that end inside an element of body 2 coarser than body 1's,
+    /// at a corner or with too few of body 2's elements across them: there the pressure can
+    /// be off by a few percent of its peak (body 2's discretisation error; [`resolution`]).
+    pub fn coarse_partner_zones(&self, pressures: &[&[f64]]) -> Vec<CoarseZone> {
+        resolution::coarse_zones(self, pressures)
     }
 
     /// Whether there are no contact points.

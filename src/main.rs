@@ -275,9 +275,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 wearfem::vtk::write_contact_job(&out, &p)?;
             }
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
-            if let Some(w) =
-                driver::edge_ends_warning(&p, &contact.edge_ends_in_contact(&[&solution.pressure]))
-            {
+            for w in driver::zone_warnings(&p, &contact, &[&solution.pressure]) {
                 eprintln!("{w}");
             }
             println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
@@ -345,7 +343,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 }
                 None => println!("no full cycle completed: no final profiles written"),
             }
-            if let Some(w) = driver::edge_ends_warning(&p, &result.edge_ends()) {
+            for w in driver::zone_warnings(&p, &result.contact, &[&h.p_plus, &h.p_minus]) {
                 eprintln!("{w}");
             }
             match &h.stopped {
@@ -413,9 +411,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 probes.join(", "),
                 out.display()
             );
-            if let Some(w) =
-                driver::edge_ends_warning(&p, &driver::steady_edge_ends(&contact, &state))
-            {
+            for w in driver::zone_warnings(&p, &contact, &[&state.p_plus, &state.p_minus]) {
                 eprintln!("{w}");
             }
         }

@@ -489,6 +489,23 @@ fn punch_on_an_even_strip_converges_to_the_matched_mesh() {
             .history
             .p_plus
     };
+    // Whether each of the first solve, the steady state and the run is reported as
+    // under-resolved by the strip (coarse_partner_zones).
+    let reported = |s: Strip| {
+        let (contact, first) = solve(&punch(s, "mortar"));
+        let (state, _, _) = wearfem::driver::steady(&punch(s, "mortar")).unwrap();
+        let run = wearfem::driver::wear(&punch(s, "mortar"), None, |_| {}).unwrap();
+        let h = &run.history;
+        [
+            !contact.coarse_partner_zones(&[&first.pressure]).is_empty(),
+            !contact
+                .coarse_partner_zones(&[&state.p_plus, &state.p_minus])
+                .is_empty(),
+            !contact
+                .coarse_partner_zones(&[&h.p_plus, &h.p_minus])
+                .is_empty(),
+        ]
+    };
     let matched = (steady_p_plus(Strip::Matched), run_p_plus(Strip::Matched));
     // The matched mesh's own error in the steady p⁺: 0.33 % of 2p̃ against the finer strip, so
     // the 1 % can tell a coarse strip from a fine one.
@@ -518,6 +535,10 @@ fn punch_on_an_even_strip_converges_to_the_matched_mesh() {
         first > 0.02 && steady > 0.01 && run > 0.01,
         "12 elements: {errors:?}"
     );
+    // ...and each of those results says so; the matched strip and 48 even elements do not.
+    assert_eq!(reported(Strip::Even(12)), [true; 3]);
+    assert_eq!(reported(Strip::Matched), [false; 3]);
+    assert_eq!(reported(Strip::Even(48)), [false; 3]);
     // ...48 and 96 meet them (2 % and 1 %, the bounds): at most 0.7 % and 0.3 %.
     for &(n, first, steady, run) in &errors[1..] {
         assert!(
@@ -549,5 +570,48 @@ fn pin_first_contact_is_smooth() {
     assert!(
         osc > 0.02 * peak,
         "5 mm flat: oscillation only {osc:.3} MPa"
+    );
+}
+
+/// The coarse-partner report (`CondensedContact::coarse_partner_zones`) marks every Hertz mesh
+/// whose pressure ripples by more than 1 % of the peak, and none of the meshes where body 2
+/// is no coarser than body 1 or where about nine of its elements span the contact. Three
+/// positions of body 2's lines each; the ripple is measured here, not taken from a table.
+#[test]
+fn a_coarse_partner_is_reported_where_it_ripples() {
+    let (_, p0) = hertz_closed_form("plane_strain");
+    let mut rippled = 0;
+    for (h1, h2, resolved) in [
+        (1.0, 1.3, false),
+        (0.5, 1.35, false),
+        (1.0, 2.7, false),
+        (1.3, 1.0, true),
+        (2.7, 1.0, true),
+        (1.0, 0.9, true),
+        (0.5, 0.65, true),
+        (0.25, 0.675, true),
+    ] {
+        for shift in [0.1, 0.37, 0.6] {
+            let (contact, sol) = solve(&hertz("plane_strain", h1, h2, shift, "mortar"));
+            let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+            let ripple = oscillation(&x, &sol.pressure, |v| v > 0.6 * p0) / p0;
+            let reported = !contact.coarse_partner_zones(&[&sol.pressure]).is_empty();
+            let case = format!(
+                "{h1} : {h2} mm shifted {shift}: ripple {:.2} %",
+                100.0 * ripple
+            );
+            if ripple > 0.01 {
+                rippled += 1;
+                assert!(reported, "{case}, not reported");
+            }
+            if resolved {
+                assert!(!reported, "{case}, reported although resolved");
+            }
+        }
+    }
+    // The check above must have had something to catch.
+    assert!(
+        rippled >= 2,
+        "only {rippled} meshes rippled by more than 1 %"
     );
 }

@@ -233,9 +233,32 @@ fn every_builtin_example_writes_readable_files_through_the_binary() {
     // Issue 11: every built-in example through the binary, each job it supports, with the
     // ParaView files; wear runs shortened to 4 steps (their files have the same form).
     let dir = std::env::temp_dir().join(format!("wearfem-builtins-{}", std::process::id()));
-    let contact_keys = ["x", "pressure", "gap", "rigid", "residuals", "solve"];
-    let run_keys = ["steps", "final", "snapshots", "steady_distance", "solves"];
-    let steady_keys = ["x", "p_plus", "p_minus", "p_sum", "shape", "status"];
+    let contact_keys = [
+        "x",
+        "pressure",
+        "gap",
+        "rigid",
+        "residuals",
+        "solve",
+        "coarse_partner_zones",
+    ];
+    let run_keys = [
+        "steps",
+        "final",
+        "snapshots",
+        "steady_distance",
+        "solves",
+        "coarse_partner_zones",
+    ];
+    let steady_keys = [
+        "x",
+        "p_plus",
+        "p_minus",
+        "p_sum",
+        "shape",
+        "status",
+        "coarse_partner_zones",
+    ];
     for (name, text) in wearfem::examples::EXAMPLES {
         let jobs: Vec<(&str, &[&str], &[&str])> = if !text.contains("[contact]") {
             vec![("elastic", &[], &["dofs", "strain_energy", "probes"])]
@@ -265,6 +288,16 @@ fn every_builtin_example_writes_readable_files_through_the_binary() {
             );
             let files = check_output_folder(&out, keys);
             assert!(files >= 3, "{name} {job}: only {files} files");
+            // The shipped examples mesh body 2 finely enough where their zones end.
+            if job != "elastic" {
+                let text = std::fs::read_to_string(out.join("summary.json")).unwrap();
+                let summary: serde_json::Value = serde_json::from_str(&text).unwrap();
+                assert_eq!(
+                    summary["coarse_partner_zones"],
+                    serde_json::json!([]),
+                    "{name} {job}"
+                );
+            }
         }
     }
     std::fs::remove_dir_all(&dir).unwrap();

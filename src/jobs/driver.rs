@@ -241,6 +241,7 @@ pub fn contact(
         "plate_force": numbers(&contact.plate_resultant.0),
         "plate_moment": number(contact.plate_resultant.1),
         "edge_ends_in_contact": edge_ends_json(&contact.edge_ends_in_contact(&[&solution.pressure])),
+        "coarse_partner_zones": coarse_zones_json(&contact.coarse_partner_zones(&[&solution.pressure])),
         "setup_seconds": setup,
     });
     // A failed solve is returned too (status in `info`): the caller writes it and says so.
@@ -364,6 +365,38 @@ pub fn edge_ends_warning(problem: &Problem, ends: &[crate::contact::EdgeEnd]) ->
     ))
 }
 
+/// `coarse_partner_zones` of summary.json: one object per contact zone that body 2's mesh does
+/// not resolve (first and last point index and position, mm; body 2's elements across it;
+/// body 2's and body 1's element lengths at its worse end, mm); an empty list when none.
+pub fn coarse_zones_json(zones: &[crate::contact::CoarseZone]) -> Value {
+    Value::Array(
+        zones
+            .iter()
+            .map(|z| json!({ "points": z.points, "from": numbers(&z.from), "to": numbers(&z.to), "partner_elements_across": number(z.partner_elements_across), "partner_element_length": number(z.partner_element_length), "element_length": number(z.element_length) }))
+            .collect(),
+    )
+}
+
+/// The console warnings on where the contact zones of `pressures` end: cut by the named
+/// edge ([`edge_ends_warning`]), or inside a coarse element of body 2.
+pub fn zone_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    pressures: &[&[f64]],
+) -> Vec<String> {
+    let mut warnings: Vec<String> =
+        edge_ends_warning(problem, &contact.edge_ends_in_contact(pressures))
+            .into_iter()
+            .collect();
+    for z in contact.coarse_partner_zones(pressures) {
+        warnings.push(format!(
+            "warning: {}: the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 2 of {:.4} mm, coarser than body 1's {:.4} mm there, and only {:.1} of body 2's elements span it: the pressure near the zone's ends can be off by a few percent of its peak (body 2's discretisation error). Refine body 2 there to no coarser than body 1, or to about {} elements across the zone, or put one of its mesh lines at the zone's end (docs/validation.md, Mortar contact)",
+            problem.file, z.from[0], z.from[1], z.to[0], z.to[1], z.partner_element_length, z.element_length, z.partner_elements_across, crate::contact::resolution::RESOLVED_ACROSS
+        ));
+    }
+    warnings
+}
+
 /// The edge ends in contact in a steady state (either half cycle).
 pub fn steady_edge_ends(
     contact: &CondensedContact,
@@ -424,6 +457,7 @@ impl WearRun {
             },
             "snapshots": h.snapshots.iter().map(|s| json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "pressure": numbers(&s.pressure), "shape": numbers(&s.shape) })).collect::<Vec<_>>(),
             "edge_ends_in_contact": edge_ends_json(&self.edge_ends()),
+            "coarse_partner_zones": coarse_zones_json(&self.contact.coarse_partner_zones(&[&h.p_plus, &h.p_minus])),
             "solves": h.solves,
             "failed_solves": h.failed_solves,
             "unconverged_steps": h.unconverged_steps,

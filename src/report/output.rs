@@ -302,6 +302,7 @@ pub fn steady_summary(
         "shape": numbers(&state.shape),
         "rigid_wear_per_period": named(&contact.rigid_names, &state.rigid_wear),
         "edge_ends_in_contact": crate::driver::edge_ends_json(&crate::driver::steady_edge_ends(contact, state)),
+        "coarse_partner_zones": crate::driver::coarse_zones_json(&contact.coarse_partner_zones(&[&state.p_plus, &state.p_minus])),
         "seconds": seconds,
     });
     let mut summary = summary;
