@@ -2,5 +2,6 @@
 
 pub mod driver;
 pub mod json;
+pub mod steady_check;
 pub mod sweep;
 pub mod validate;

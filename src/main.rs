@@ -323,23 +323,21 @@ fn run(cli: Cli) -> Result<(), Failure> {
             println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '{first}' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
             match &h.steady_distance {
                 Some(d) => {
-                    let verdict = if d.wear <= wearfem::wear::STEADY_REPORT_LIMIT {
+                    use wearfem::steady_check::SteadyCheck;
+                    let settled = d.wear <= wearfem::wear::STEADY_REPORT_LIMIT;
+                    let verdict = if result.steady_check.reached(h) {
                         "at the steady state"
+                    } else if settled {
+                        "NOT at the steady state, though one cycle changes little: a slow approach (run longer) or a schedule that settles beside it (explicit `substeps`, very large k); `wearfem steady` gives the steady state directly"
                     } else {
                         "NOT yet at the steady state: run longer, or use `wearfem steady`"
                     };
-                    // Under monotonic sliding there is one pressure, not a sum of two.
-                    let summed = if p
-                        .spec
-                        .wear
-                        .as_ref()
-                        .is_some_and(|w| w.sliding == "monotonic")
-                    {
-                        "p"
-                    } else {
-                        "p⁺ + p⁻"
+                    let against = match &result.steady_check {
+                        SteadyCheck::Compared { pressure, seconds } => format!("pressures {:.2} % of the peak from the steady state's (`wearfem steady`, computed in {seconds:.3} s)", 100.0 * pressure),
+                        SteadyCheck::Unavailable(why) => format!("no steady state to compare with ({why})"),
+                        SteadyCheck::NoCycle => String::new(),
                     };
-                    println!("last cycle: wear per period rigid to {:.2e} (relative), δw = {:.3e} mm, {summed} spread {:.2} %: {verdict}", d.wear, d.delta_w, 100.0 * d.summed_pressure);
+                    println!("last cycle: {against}; wear per period rigid to {:.2e} (relative), δw = {:.3e} mm: {verdict}", d.wear, d.delta_w);
                 }
                 None => println!("no full cycle completed: no final profiles written"),
             }

@@ -87,6 +87,70 @@ fn assert_run_reaches_steady(
     }
     let distance = h.steady_distance.expect("a full cycle");
     assert!(distance.wear < 0.01, "{case}: {distance:?}");
+    // ...and the run's own report says so.
+    assert!(
+        run.steady_check.reached(h),
+        "{case}: {:?}",
+        run.steady_check
+    );
+}
+
+/// Red-team finding: a run whose last cycle's wear is already a rigid motion to 1e-2 (the
+/// run's own measure) can still be several percent of the peak pressure from the steady
+/// state (a slow mode: the pinned plate's rotation, the worn zone's ends). The report compares
+/// with the steady state itself: neither run below is called steady, and the distance it
+/// gives is the largest pressure difference from `steady` computed here.
+#[test]
+fn a_run_that_settles_slowly_is_not_called_steady() {
+    use wearfem::steady_check::SteadyCheck;
+    for (case, edits, steps) in [
+        (
+            "μ = 0.36, 5000 steps",
+            vec![("friction = 0.25", "friction = 0.36")],
+            5000,
+        ),
+        (
+            "one step of k = 100 000 per cycle, 40 steps",
+            vec![("[wear]", "[wear]\nextrapolation = [{ k = 100000 }]")],
+            40,
+        ),
+    ] {
+        let problem = common::problem("punch-b40", &edits);
+        let run = driver::wear(&problem, Some(steps), |_| {}).expect("run");
+        let h = &run.history;
+        let own = h.steady_distance.expect("a full cycle");
+        assert!(own.wear < 0.01, "{case}: the run's own measure {own:?}");
+        let (state, _, _) = driver::steady(&problem).expect("steady");
+        let peak = state
+            .p_plus
+            .iter()
+            .chain(&state.p_minus)
+            .fold(0.0f64, |a, p| a.max(*p));
+        let worst = h
+            .p_plus
+            .iter()
+            .zip(&state.p_plus)
+            .chain(h.p_minus.iter().zip(&state.p_minus))
+            .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+        assert!(worst > 0.01 * peak, "{case}: {worst} MPa, peak {peak}");
+        match run.steady_check {
+            SteadyCheck::Compared { pressure, .. } => {
+                // The same numbers in the same order: round-off only.
+                assert!(
+                    (pressure - worst / peak).abs() < 1e-12,
+                    "{case}: {pressure}"
+                );
+            }
+            ref other => panic!("{case}: {other:?}"),
+        }
+        assert!(!run.steady_check.reached(h), "{case}");
+        let summary = run.summary(&problem);
+        assert_eq!(
+            summary["steady_reached"],
+            serde_json::json!(false),
+            "{case}"
+        );
+    }
 }
 
 #[test]

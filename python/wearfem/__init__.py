@@ -152,7 +152,11 @@ class RunResult(_Result):
     delta_w (mm, reciprocating only) and ``p_<probe>`` (MPa). Final profiles (None when the
     run did not complete a cycle): ``x`` (mm), ``p_plus``, ``p_minus``, ``p_sum`` (MPa),
     ``shape`` (mm). Scalars: ``status`` ("solved", or what went wrong), ``converged``,
-    ``steady_reached``, ``solves``, ``failed_solves``, ``unconverged_steps``,
+    ``steady_reached`` (the last cycle's pressures within 1 % of the peak of the steady
+    state of the same problem, or, where none exists, its wear rigid to 1 %),
+    ``steady_distance`` (a dict: ``pressure``, that distance relative to the peak, None
+    without a steady state; ``wear``, ``delta_w`` mm, ``summed_pressure``), ``solves``,
+    ``failed_solves``, ``unconverged_steps``,
     ``sliding_distance_m`` (m), ``setup_seconds``, ``run_seconds`` (s).
     """
 
@@ -179,6 +183,7 @@ class RunResult(_Result):
         self.failed_solves: int = summary["failed_solves"]
         self.unconverged_steps: int = summary["unconverged_steps"]
         self.steady_reached: Optional[bool] = summary.get("steady_reached")
+        self.steady_distance: Optional[Dict[str, Optional[float]]] = summary.get("steady_distance")
         self.sliding_distance_m: Optional[float] = summary["sliding_distance_m"]
         self.setup_seconds: float = summary["setup_seconds"]
         self.run_seconds: float = summary["run_seconds"]

@@ -71,6 +71,7 @@ class RunResult:
     status: str
     converged: bool
     steady_reached: Optional[bool]
+    steady_distance: Optional[Dict[str, Optional[float]]]
     solves: int
     failed_solves: int
     unconverged_steps: int

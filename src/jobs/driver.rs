@@ -264,6 +264,8 @@ pub struct WearRun {
     pub records_past_end: Vec<usize>,
     /// Sliding distance of one half period (monotonic: of one step unit), mm.
     pub sliding_per_half_period: f64,
+    /// The last cycle against the steady state of the same problem (not in `run_seconds`).
+    pub steady_check: super::steady_check::SteadyCheck,
 }
 
 /// Run the wear integration of `problem` (optionally overriding the number of steps).
@@ -323,6 +325,7 @@ pub fn wear(
         on_step,
     );
     let run_seconds = start.elapsed().as_secs_f64();
+    let steady_check = super::steady_check::check(&contact, &integrator, &history);
     Ok(WearRun {
         contact,
         history,
@@ -331,6 +334,7 @@ pub fn wear(
         run_seconds,
         records_past_end,
         sliding_per_half_period: integrator.sliding_per_half_period(),
+        steady_check,
     })
 }
 
@@ -479,12 +483,22 @@ impl WearRun {
         }
         match &h.steady_distance {
             Some(d) => {
+                use super::steady_check::SteadyCheck;
+                let (pressure, check) = match &self.steady_check {
+                    SteadyCheck::Compared { pressure, .. } => {
+                        (number(*pressure), json!("compared"))
+                    }
+                    SteadyCheck::Unavailable(why) => (Value::Null, json!(why)),
+                    SteadyCheck::NoCycle => (Value::Null, json!("no complete cycle")),
+                };
                 summary["steady_distance"] = json!({
+                    "pressure": pressure,
                     "wear": number(d.wear),
                     "delta_w": number(d.delta_w),
                     "summed_pressure": number(d.summed_pressure),
                 });
-                summary["steady_reached"] = json!(d.wear <= crate::wear::STEADY_REPORT_LIMIT);
+                summary["steady_check"] = check;
+                summary["steady_reached"] = json!(self.steady_check.reached(h));
             }
             None => {
                 // No full cycle: the profiles of `final` are not results.
