@@ -263,24 +263,32 @@ fn run(cli: Cli) -> Result<(), Failure> {
         } => {
             let p = load(&problem, &set)?;
             let (summary, contact, solution, info) = driver::contact(&p)?;
-            wearfem::output::write_contact(
-                &out,
-                &wearfem::plot::problem_name(&p.file),
-                &summary,
-                &contact,
-                &solution,
-            )?;
+            let solved = info.status == wearfem::complementarity::Status::Solved;
+            if solved {
+                wearfem::output::write_contact(
+                    &out,
+                    &wearfem::plot::problem_name(&p.file),
+                    &summary,
+                    &contact,
+                    &solution,
+                )?;
+            } else {
+                // Only the status and residuals: no CSV or figure of a failed solve.
+                wearfem::output::write_json(&out, "summary.json", &summary)?;
+            }
             // A failed solve gets no ParaView files (its message follows).
-            if wants_vtk(vtk, &p) && info.status == wearfem::complementarity::Status::Solved {
+            if wants_vtk(vtk, &p) && solved {
                 wearfem::vtk::write_contact_job(&out, &p)?;
             }
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
             for w in driver::zone_warnings(&p, &contact, &[&solution.pressure]) {
                 eprintln!("{w}");
             }
-            println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
+            if solved {
+                println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
+            }
             if info.status == wearfem::complementarity::Status::Failed {
-                return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}); the last iterate was written. A solution may not exist: with a plate that rotates about a pin, friction moves the pressure resultant by μ·l_z, and if that leaves the contact the plate tips", info.complementarity, info.equilibrium)));
+                return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}); summary.json holds the status and residuals, and no values of the failed solve were written. A solution may not exist: with a plate that rotates about a pin, friction moves the pressure resultant by μ·l_z, and if that leaves the contact the plate tips", info.complementarity, info.equilibrium)));
             }
         }
         Command::Run {

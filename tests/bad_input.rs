@@ -263,3 +263,36 @@ fn loads_and_supports_that_act_nowhere() {
     );
     expect_error(&text, "nowhere", &["bodies[0].tractions[0].window"]);
 }
+
+/// A contact solve that fails (μ = 5 tips the pinned plate of punch-b40) exits 1 and writes
+/// only its status and residuals: no pressure, no CSV, no figure.
+#[test]
+fn a_failed_contact_solve_writes_no_values() {
+    let out = std::env::temp_dir().join(format!("wearfem-failed-contact-{}", std::process::id()));
+    let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .args([
+            "contact",
+            "punch-b40",
+            "--set",
+            "contact.friction=5",
+            "--out",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(result.status.code(), Some(1));
+    let stdout = String::from_utf8_lossy(&result.stdout);
+    assert!(!stdout.contains("peak pressure"), "{stdout}");
+    let files: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(files, ["summary.json"]);
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["solve"]["status"], "failed");
+    for key in ["pressure", "gap", "rigid", "probes"] {
+        assert!(summary[key].is_null(), "{key}: {}", summary[key]);
+    }
+    std::fs::remove_dir_all(&out).unwrap();
+}

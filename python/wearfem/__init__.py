@@ -99,17 +99,19 @@ class ContactResult(_Result):
 
     Arrays, one entry per contact point in edge order: ``x``, ``z`` (mm), ``pressure`` (MPa),
     ``gap`` (mm). Scalars: ``status`` ("solved" or "failed": a failed solve is returned, not
-    raised), ``iterations``, ``rigid`` (plate unknowns: mm, rad), ``probes`` (MPa), residuals.
+    raised, with its residuals and None for pressure, gap, rigid and probes), ``iterations``,
+    ``rigid`` (plate unknowns: mm, rad), ``probes`` (MPa), residuals.
     """
 
     def __init__(self, summary):
         super().__init__(summary)
         self.x = _array(summary["x"])
         self.z = _array(summary["z"])
-        self.pressure = _array(summary["pressure"])
-        self.gap = _array(summary["gap"])
-        self.rigid: Dict[str, float] = summary["rigid"]
-        self.probes: Dict[str, float] = summary["probes"]
+        # A failed solve carries no values (None), only its status and residuals.
+        self.pressure = _array(summary["pressure"]) if summary["pressure"] is not None else None
+        self.gap = _array(summary["gap"]) if summary["gap"] is not None else None
+        self.rigid: Optional[Dict[str, float]] = summary["rigid"]
+        self.probes: Optional[Dict[str, float]] = summary["probes"]
         self.iterations: int = summary["iterations"]
         self.status: str = summary["solve"]["status"]
         self.converged: bool = self.status == "solved"

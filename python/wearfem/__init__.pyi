@@ -34,10 +34,10 @@ class ContactResult:
     summary: Dict[str, Any]
     x: FloatArray  # mm
     z: FloatArray  # mm
-    pressure: FloatArray  # MPa
-    gap: FloatArray  # mm
-    rigid: Dict[str, float]  # mm, rad
-    probes: Dict[str, float]  # MPa
+    pressure: Optional[FloatArray]  # MPa; None for a failed solve
+    gap: Optional[FloatArray]  # mm; None for a failed solve
+    rigid: Optional[Dict[str, float]]  # mm, rad; None for a failed solve
+    probes: Optional[Dict[str, float]]  # MPa; None for a failed solve
     iterations: int
     status: str  # "solved" or "failed"
     converged: bool

@@ -244,7 +244,16 @@ pub fn contact(
         "coarse_partner_zones": coarse_zones_json(&contact.coarse_partner_zones(&[&solution.pressure])),
         "setup_seconds": setup,
     });
-    // A failed solve is returned too (status in `info`): the caller writes it and says so.
+    // A failed solve is returned too (status in `info`), with its residuals but none of its
+    // values in the summary: nothing taken from a failed solve is a result.
+    let mut summary = summary;
+    if info.status != Status::Solved {
+        for key in ["pressure", "gap", "rigid", "probes"] {
+            summary[key] = Value::Null;
+        }
+        summary["edge_ends_in_contact"] = json!([]);
+        summary["coarse_partner_zones"] = json!([]);
+    }
     Ok((summary, contact, solution, info))
 }
 
