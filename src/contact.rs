@@ -29,7 +29,7 @@ pub mod zone;
 use flexibility::add_flexibility;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
-pub use resolution::{CoarseZone, PointResolution};
+pub use resolution::{CoarseZone, PointResolution, UnmatchedLine};
 pub use zone::EdgeEnd;
 
 /// `[contact]` section of a problem file.
@@ -144,6 +144,9 @@ pub struct CondensedContact {
     /// Both meshes' element lengths at each contact point (see
     /// [`CondensedContact::coarse_partner_zones`]).
     pub resolution: Vec<PointResolution>,
+    /// Collocation only: the lines of body 2 inside one of body 1's contact elements (where
+    /// one-point partners make the pressure oscillate); empty for matched lines and for mortar.
+    pub unmatched_lines: Vec<UnmatchedLine>,
 }
 
 fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize, bool)> {
@@ -510,6 +513,11 @@ impl CondensedContact {
         }
         let resolution =
             resolution::point_resolution(body1, &chain, body2, &edge2, &points.x, &points.normal);
+        let unmatched_lines = if c.discretisation == "collocation" {
+            resolution::unmatched_lines(body1, &chain, body2, &edge2)
+        } else {
+            Vec::new()
+        };
         let n = points.x.len();
         let mut a_nn = vec![0.0; n * n];
         let mut a_nt = vec![0.0; n * n];
@@ -532,6 +540,7 @@ impl CondensedContact {
             plate_resultant,
             surface_continues: zone::surface_continues(body1, &chain),
             resolution,
+            unmatched_lines,
         };
         Ok(contact)
     }
@@ -606,6 +615,18 @@ impl CondensedContact {
     /// be off by a few percent of its peak (body 2's discretisation error; [`resolution`]).
     pub fn coarse_partner_zones(&self, pressures: &[&[f64]]) -> Vec<CoarseZone> {
         resolution::coarse_zones(self, pressures)
+    }
+
+    /// The fewest points in contact of any of `pressures` (MPa, one value per point), when it
+    /// is below [`resolution::MIN_POINTS`]: the mesh does not resolve the contact zone.
+    pub fn too_few_points_in_contact(&self, pressures: &[&[f64]]) -> Option<usize> {
+        resolution::too_few_points(pressures)
+    }
+
+    /// Collocation only: a line of body 2 inside an element of body 1 that is in contact in
+    /// any of `pressures` ([x, z], mm), where the pressure oscillates.
+    pub fn unmatched_line_in_contact(&self, pressures: &[&[f64]]) -> Option<Point> {
+        resolution::unmatched_in_contact(&self.unmatched_lines, pressures)
     }
 
     /// Whether there are no contact points.

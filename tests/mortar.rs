@@ -615,3 +615,36 @@ fn a_coarse_partner_is_reported_where_it_ripples() {
         "only {rippled} meshes rippled by more than 1 %"
     );
 }
+
+/// Collocation needs body 2's lines on body 1's element ends: a line inside an element in
+/// contact is reported (there the pressure oscillates, measured here), lines that match and
+/// mortar are not. And a load so small that one point carries it is reported as unresolved.
+#[test]
+fn collocation_off_the_lines_and_a_one_point_contact_are_reported() {
+    let (_, p0) = hertz_closed_form("plane_strain");
+    let (contact, sol) = solve(&hertz("plane_strain", 0.5, 0.65, 0.37, "collocation"));
+    let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+    let ripple = oscillation(&x, &sol.pressure, |v| v > 0.6 * p0) / p0;
+    assert!(ripple > 0.02, "ripple {ripple}");
+    assert!(contact
+        .unmatched_line_in_contact(&[&sol.pressure])
+        .is_some());
+    let (contact, sol) = solve(&hertz("plane_strain", 0.5, 0.65, 0.37, "mortar"));
+    assert!(contact
+        .unmatched_line_in_contact(&[&sol.pressure])
+        .is_none());
+    // The shipped example: body 2's lines on body 1's.
+    let (contact, sol) = solve(&example_hertz(&[
+        "contact.discretisation=collocation".into()
+    ]));
+    assert!(contact
+        .unmatched_line_in_contact(&[&sol.pressure])
+        .is_none());
+    assert_eq!(contact.too_few_points_in_contact(&[&sol.pressure]), None);
+    // Hertz's half-width goes as √F: 1e-8 of the load gives a = 0.3 µm, inside one point's
+    // share of a 1 mm element.
+    let (contact, sol) = solve(&example_hertz(&[
+        "bodies[0].tractions[0].normal=38.825e-8".into()
+    ]));
+    assert_eq!(contact.too_few_points_in_contact(&[&sol.pressure]), Some(1));
+}

@@ -141,7 +141,7 @@ fn invert(m: &[f64], n: usize) -> Vec<f64> {
 
 /// Parameters s ∈ (−1, 1) of body 1's element where the normal line passes through one of
 /// body 2's element ends: the kinks of the integrand.
-fn break_points(
+pub(super) fn break_points(
     body1: &ElasticBody,
     c: &ChainElement,
     body2: &ElasticBody,

@@ -41,6 +41,10 @@ pub const RESOLVED_ACROSS: f64 = 6.0;
 /// with 7.2 elements across, the brake shoe 2.7 % with 6.0; the pin's worn cap 0.48 % with 14.
 pub const RESOLVED_ACROSS_CORNER: f64 = 8.0;
 
+/// Fewer points in contact than this do not resolve a contact zone: a pressure profile needs
+/// a few points to have a shape (one point carries the whole load as its mean).
+pub const MIN_POINTS: usize = 3;
+
 /// The meshes at one contact point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PointResolution {
@@ -211,4 +215,69 @@ fn assess(x: &[Point], cells: &[PointResolution], ends: [usize; 2]) -> Option<Co
         partner_element_length: worst.0,
         element_length: worst.1,
     })
+}
+
+/// The fewest points in contact of any of `pressures` (p > 1e-6 of its peak), when it is
+/// positive and below [`MIN_POINTS`].
+pub(super) fn too_few_points(pressures: &[&[f64]]) -> Option<usize> {
+    pressures
+        .iter()
+        .map(|p| {
+            let peak = p.iter().cloned().fold(0.0, f64::max);
+            p.iter().filter(|&&v| v > 1e-6 * peak).count()
+        })
+        .filter(|&n| n > 0 && n < MIN_POINTS)
+        .min()
+}
+
+/// A line of body 2 inside one of body 1's contact elements, for collocation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UnmatchedLine {
+    /// Its position on body 1's edge [x, z], mm.
+    pub x: Point,
+    /// The contact points of body 1's element it falls in (first, last).
+    pub points: [usize; 2],
+}
+
+/// Collocation only: the lines of body 2 that fall inside one of body 1's contact elements,
+/// where one-point partners make the pressure oscillate (docs/validation.md: 4–36 % of the
+/// peak on the Hertz meshes); empty when body 2's lines meet body 1's element ends.
+pub(super) fn unmatched_lines(
+    body1: &ElasticBody,
+    chain: &[ChainElement],
+    body2: &ElasticBody,
+    edges2: &[(usize, usize)],
+) -> Vec<UnmatchedLine> {
+    let p = body1.dofs.p;
+    chain
+        .iter()
+        .flat_map(|c| {
+            let breaks = super::mortar::break_points(body1, c, body2, edges2);
+            // Ends of body 2's elements within 1e-6 of body 1's element ends count as matched.
+            breaks
+                .into_iter()
+                .filter(|s| s.abs() < 1.0 - 1e-6)
+                .map(move |s| {
+                    let t = if c.reversed { -s } else { s };
+                    UnmatchedLine {
+                        x: body1.mesh.point_on_edge(c.element, c.local, t),
+                        points: [c.first_point, c.first_point + p],
+                    }
+                })
+        })
+        .collect()
+}
+
+/// The first of `lines` inside an element of body 1 that is in contact in any of `pressures`.
+pub(super) fn unmatched_in_contact(lines: &[UnmatchedLine], pressures: &[&[f64]]) -> Option<Point> {
+    let in_contact = |i: usize| {
+        pressures.iter().any(|p| {
+            let peak = p.iter().cloned().fold(0.0, f64::max);
+            p.get(i).is_some_and(|&v| v > 1e-6 * peak)
+        })
+    };
+    lines
+        .iter()
+        .find(|l| (l.points[0]..=l.points[1]).any(in_contact))
+        .map(|l| l.x)
 }

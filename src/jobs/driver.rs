@@ -401,6 +401,18 @@ pub fn zone_warnings(
         edge_ends_warning(problem, &contact.edge_ends_in_contact(pressures))
             .into_iter()
             .collect();
+    if let Some(n) = contact.too_few_points_in_contact(pressures) {
+        warnings.push(format!(
+            "warning: {}: only {n} contact point(s) carry pressure: the mesh does not resolve the contact zone, and the pressure there is a mean over the point's share of the edge, not a profile. Refine body 1's contact edge (smaller elements or a higher p) until the zone spans several points",
+            problem.file
+        ));
+    }
+    if let Some(x) = contact.unmatched_line_in_contact(pressures) {
+        warnings.push(format!(
+            "warning: {}: contact.discretisation = \"collocation\" with a line of body 2 inside one of body 1's contact elements (at ({:.4}, {:.4})): one-point partners make the pressure oscillate there by several percent of its peak. Use the default \"mortar\", or match body 2's mesh lines to body 1's",
+            problem.file, x[0], x[1]
+        ));
+    }
     for z in contact.coarse_partner_zones(pressures) {
         warnings.push(format!(
             "warning: {}: the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 2 of {:.4} mm, coarser than body 1's {:.4} mm there, and only {:.1} of body 2's elements span it: the pressure near the zone's ends can be off by a few percent of its peak (body 2's discretisation error). Refine body 2 there to no coarser than body 1, or to about {} elements across the zone, or put one of its mesh lines at the zone's end (docs/validation.md, Mortar contact)",
