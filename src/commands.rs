@@ -173,14 +173,27 @@ pub(crate) fn steady_by(
     if vtk {
         wearfem::vtk::write_steady(out, p, &outcome.state)?;
     }
-    if let Some(w) =
-        driver::edge_ends_warning(p, &driver::steady_edge_ends(&contact, &outcome.state))
-    {
+    let state = &outcome.state;
+    for w in driver::zone_warnings(p, &contact, &[&state.p_plus, &state.p_minus]) {
         eprintln!("{w}");
+    }
+    match outcome.distance_from_exact {
+        Some(d) if d > wearfem::steady_check::STEADY_PRESSURE_LIMIT => eprintln!(
+            "warning: {}: the {} method's pressures are {:.2} % of the peak from the exact steady state (`--method exact`): the paper's §6 methods approximate it (docs/validation.md)",
+            p.file,
+            method.name(),
+            100.0 * d
+        ),
+        Some(_) => {}
+        None => eprintln!(
+            "note: {}: the exact steady state could not be computed to compare the {} method with",
+            p.file,
+            method.name()
+        ),
     }
     let last = outcome.history.last();
     println!(
-        "{}: steady state by the {} method: {} iterations, {} contact solves, {:.4} s (+{:.4} s set-up); eq. 49 residual {:.2e}, max δw {:.2e} mm → {}",
+        "{}: steady state by the {} method: {} iterations, {} contact solves, {:.4} s (+{:.4} s set-up); eq. 49 residual {:.2e}, max δw {:.2e} mm; pressures {} of the peak from the exact steady state → {}",
         p.file,
         method.name(),
         outcome.state.iterations,
@@ -189,6 +202,9 @@ pub(crate) fn steady_by(
         setup,
         outcome.residual,
         last.map_or(f64::NAN, |r| r.max_delta_w),
+        outcome
+            .distance_from_exact
+            .map_or("(not computed)".to_string(), |d| format!("{:.2} %", 100.0 * d)),
         out.display()
     );
     Ok(())

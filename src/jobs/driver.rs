@@ -616,5 +616,24 @@ pub fn steady_by(
         };
         JobError::Problem(problem.error(key, e.to_string()))
     })?;
+    // The §6 methods approximate the steady state; the exact one (one Newton solve) says by
+    // how much.
+    let mut outcome = outcome;
+    if outcome.state.status == crate::steady::SteadyStatus::Solved {
+        let exact = crate::steady::steady_state(
+            &contact,
+            &integrator.half_period_wear(),
+            crate::steady::SteadySliding::Reciprocating,
+            Default::default(),
+        );
+        if let Ok(exact) = exact.as_ref().map_err(|_| ()).and_then(|e| {
+            (e.status == crate::steady::SteadyStatus::Solved)
+                .then_some(e)
+                .ok_or(())
+        }) {
+            outcome.distance_from_exact =
+                super::steady_check::pressure_distance(&outcome.state, exact);
+        }
+    }
     Ok((outcome, contact, setup))
 }

@@ -112,3 +112,25 @@ pub fn check(
         seconds: start.elapsed().as_secs_f64(),
     }
 }
+
+/// Largest difference of `a`'s p⁺ and p⁻ from `reference`'s, relative to the reference's
+/// peak pressure (None when the reference carries no pressure or the profiles differ in size).
+pub fn pressure_distance(
+    a: &crate::steady::SteadyState,
+    reference: &crate::steady::SteadyState,
+) -> Option<f64> {
+    let peak = reference
+        .p_plus
+        .iter()
+        .chain(&reference.p_minus)
+        .fold(0.0f64, |m, &v| m.max(v));
+    let same =
+        a.p_plus.len() == reference.p_plus.len() && a.p_minus.len() == reference.p_minus.len();
+    let worst = a
+        .p_plus
+        .iter()
+        .zip(&reference.p_plus)
+        .chain(a.p_minus.iter().zip(&reference.p_minus))
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+    (same && peak > 0.0 && worst.is_finite()).then(|| worst / peak)
+}

@@ -424,6 +424,7 @@ pub fn write_steady_method(
     summary["max_delta_w"] = number(outcome.delta_w.iter().cloned().fold(0.0, f64::max));
     summary["history"] = Value::Array(history);
     summary["contact_solves"] = json!(outcome.contact_solves);
+    summary["distance_from_exact"] = outcome.distance_from_exact.map_or(Value::Null, number);
     if let Some(c_n) = outcome.penalty_stiffness {
         summary["penalty_stiffness"] = number(c_n);
     }

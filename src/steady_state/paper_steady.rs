@@ -129,6 +129,9 @@ pub struct MethodOutcome {
     pub residual: f64,
     /// Contact solves made.
     pub contact_solves: usize,
+    /// Largest difference of p⁺ and p⁻ from the exact steady state's, relative to its peak
+    /// (filled in by the caller that computes the exact one; None here).
+    pub distance_from_exact: Option<f64>,
     /// c_n used by the penalty method, MPa/mm.
     pub penalty_stiffness: Option<f64>,
     /// Wall time of the method (the FE set-up excluded), s.
@@ -347,6 +350,7 @@ impl<'a> Evaluator<'a> {
             history,
             state,
             contact_solves: self.solves,
+            distance_from_exact: None,
             penalty_stiffness: None,
             seconds: start.elapsed().as_secs_f64(),
             iterates: Vec::new(),
@@ -386,6 +390,7 @@ pub fn solve_steady(
             history: vec![record],
             state,
             contact_solves: 0,
+            distance_from_exact: None,
             penalty_stiffness: None,
             seconds: start.elapsed().as_secs_f64(),
             iterates: Vec::new(),
