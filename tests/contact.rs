@@ -252,3 +252,48 @@ fn no_solution_is_reported_as_failed_not_solved() {
         }
     }
 }
+
+/// Body 1 below body 2, pressed up into it (punch-b40 turned upside down, z → 200 − z; a
+/// red-team case the plate's translation once refused as "not pressing onto body 2"). By
+/// symmetry its '+' half cycle is the original's '−' one (the tangent turns with the normal),
+/// which for punch-b40 is the '+' profile mirrored in x: the first contact solve must be the
+/// original's reversed, the plate's unknowns the same, and the steady p⁺ the original p⁻.
+#[test]
+fn a_punch_pressed_up_into_its_partner_is_the_mirror_image() {
+    let text = include_str!("problems/punch-b40-upside-down.toml");
+    let upside_down = Problem::from_toml(text, "punch-b40-upside-down.toml").unwrap();
+    let original = Problem::from_toml(
+        wearfem::examples::example("punch-b40").unwrap(),
+        "punch-b40",
+    )
+    .unwrap();
+    let (_, _, up, up_info) = wearfem::driver::contact(&upside_down).unwrap();
+    let (_, _, down, _) = wearfem::driver::contact(&original).unwrap();
+    assert_eq!(up_info.status, Status::Solved);
+    let peak = down.pressure.iter().cloned().fold(0.0, f64::max);
+    let mirrored: Vec<f64> = down.pressure.iter().rev().copied().collect();
+    // Round-off of two solves of the same linear system, assembled in other orders.
+    let worst = up
+        .pressure
+        .iter()
+        .zip(&mirrored)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(worst < 1e-9 * peak, "first solve differs by {worst} MPa");
+    for (a, b) in up.rigid.iter().zip(&down.rigid) {
+        assert!(
+            (a - b).abs() < 1e-9 * b.abs(),
+            "plate unknowns {:?} against {:?}",
+            up.rigid,
+            down.rigid
+        );
+    }
+    let (up_steady, _, _) = wearfem::driver::steady(&upside_down).unwrap();
+    let (down_steady, _, _) = wearfem::driver::steady(&original).unwrap();
+    // The '−' half cycle of the original, point for point (not mirrored).
+    let worst = up_steady
+        .p_plus
+        .iter()
+        .zip(&down_steady.p_minus)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(worst < 1e-9 * peak, "steady p⁺ differs by {worst} MPa");
+}

@@ -40,7 +40,16 @@ pub(super) fn plate_modes(
             [sum[0] / length, sum[1] / length]
         }
     };
-    let translation = |_: Point| [0.0, -1.0];
+    // λ_F translates the plate towards body 2: down when body 2 lies below body 1 (the
+    // paper's punch on a strip), up when it lies above (the normals n_c point into body 2).
+    let facing_up: f64 = points
+        .normal
+        .iter()
+        .zip(&points.weight)
+        .map(|(n, w)| n[1] * w)
+        .sum();
+    let toward = if facing_up > 0.0 { 1.0 } else { -1.0 };
+    let translation = move |_: Point| [0.0, toward];
     let rotation = move |x: Point| [x[1] - pin[1], -(x[0] - pin[0])];
     type Mode = (&'static str, Box<dyn Fn(Point) -> Point>);
     let modes: Vec<Mode> = match pl.motion.as_str() {
@@ -87,14 +96,15 @@ pub(super) fn plate_modes(
             },
         );
     }
-    // load[0] is the work of the loads on the downward translation: positive when they press
-    // body 1 onto body 2. Otherwise a plate free to move lifts off and no contact exists.
+    // load[0] is the work of the loads on the translation towards body 2: positive when they
+    // press body 1 onto body 2. Otherwise a plate free to move lifts off and no contact exists.
     if !modes.is_empty() && (load[0].is_nan() || load[0] <= 0.0) {
         return Err(problem.error(
             format!("bodies[{b1}].tractions"),
             format!(
-                "the loads on body 1 do not press it onto body 2 (vertical resultant {:+.4e} N, + = up), so a plate free to move lifts it off",
-                force[1]
+                "the loads on body 1 do not press it onto body 2 (vertical resultant {:+.4e} N, + = up; body 2 lies {} body 1), so a plate free to move lifts it off",
+                force[1],
+                if toward > 0.0 { "above" } else { "below" }
             ),
         ));
     }
