@@ -73,6 +73,23 @@ def test_overrides_change_what_they_name(punch):
     assert "friction = 0.05" in punch.with_overrides({"contact.friction": 0.05}).to_toml()
 
 
+def test_numpy_values_are_taken_as_python_ones(punch):
+    """A study's values often come from numpy (linspace, arrays): the same override as with
+    plain Python values, key for key."""
+    plain = punch.with_overrides({"plate.pin": [1100.0, 40.0], "contact.friction": 0.3, "bodies[1].blocks[0].v": [0.0, 0.5, 1.0]})
+    numpy = punch.with_overrides(
+        {"plate.pin": np.array([1100.0, 40.0]), "contact.friction": np.float64(0.3), "bodies[1].blocks[0].v": np.linspace(0.0, 1.0, 3)}
+    )
+    assert numpy.overrides == plain.overrides
+
+
+def test_failed_contact_solve_has_no_values(punch):
+    """μ = 5 tips the pinned plate: the result says so and carries no values of the solve."""
+    r = punch.with_overrides({"contact.friction": 5.0}).contact()
+    assert r.status == "failed" and not r.converged
+    assert r.pressure is None and r.gap is None and r.rigid is None
+
+
 def test_override_load_scales_pressure(punch):
     """The paper's eq. 23a: in the periodic steady state p⁺ + p⁻ = 2 p̃ at every contact
     point, p̃ = the normal traction on the punch top (punch and top are equally wide). Set

@@ -275,8 +275,9 @@ class Problem:
         """A new problem with ``values`` ({dotted key: value}, the command line's ``--set``
         keys: ``contact.friction``, ``plate.pin``, ``bodies[1].blocks[0].u``) applied, in
         order, after this problem's own overrides. A key the schema does not know, or a
-        value of the wrong type, raises :class:`WearfemError` naming the key."""
-        return Problem(self._inner.with_overrides(dict(values)))
+        value of the wrong type, raises :class:`WearfemError` naming the key. numpy scalars
+        and arrays are taken as the Python numbers and lists they hold."""
+        return Problem(self._inner.with_overrides({k: _plain(v) for k, v in dict(values).items()}))
 
     def to_toml(self) -> str:
         """The problem file with its overrides applied, as TOML text."""
@@ -326,6 +327,20 @@ class Problem:
         if method != "exact":
             raise ValueError(f'method must be "exact", got {method!r}')
         return SteadyResult(json.loads(self._inner._steady()))
+
+
+def _plain(v: Any) -> Any:
+    """numpy scalars and arrays as Python numbers and lists (recursively in lists, tuples and
+    dicts), which the problem file's types are made of; everything else as it is."""
+    if isinstance(v, np.ndarray):
+        return v.tolist()
+    if isinstance(v, np.generic):
+        return v.item()
+    if isinstance(v, (list, tuple)):
+        return [_plain(x) for x in v]
+    if isinstance(v, Mapping):
+        return {k: _plain(x) for k, x in v.items()}
+    return v
 
 
 def _toml_value(v: Any, key: str, file: str) -> str:
