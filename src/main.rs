@@ -349,6 +349,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 }
                 None => println!("no full cycle completed: no final profiles written"),
             }
+            for w in driver::model_warnings(&p, &result.contact) {
+                eprintln!("{w}");
+            }
             for w in driver::zone_warnings(&p, &result.contact, &[&h.p_plus, &h.p_minus]) {
                 eprintln!("{w}");
             }
@@ -417,6 +420,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 probes.join(", "),
                 out.display()
             );
+            for w in driver::model_warnings(&p, &contact) {
+                eprintln!("{w}");
+            }
             for w in driver::zone_warnings(&p, &contact, &[&state.p_plus, &state.p_minus]) {
                 eprintln!("{w}");
             }

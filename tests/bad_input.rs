@@ -296,3 +296,33 @@ fn a_failed_contact_solve_writes_no_values() {
     }
     std::fs::remove_dir_all(&out).unwrap();
 }
+
+/// What the model leaves out is said, not silent: a stroke far beyond the contact edge (fixed
+/// contact pairs) and body 2 wearing under monotonic sliding each give a warning, and the
+/// shipped punch-b40 (stroke 5 % of its edge) gives none.
+#[test]
+fn model_limits_are_warned_about() {
+    let stderr = |sets: &[&str]| {
+        let out = std::env::temp_dir().join(format!("wearfem-limits-{}", std::process::id()));
+        let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"));
+        cmd.args(["steady", "punch-b40", "--out"]).arg(&out);
+        for s in sets {
+            cmd.args(["--set", s]);
+        }
+        let result = cmd.output().unwrap();
+        let _ = std::fs::remove_dir_all(&out);
+        String::from_utf8_lossy(&result.stderr).into_owned()
+    };
+    assert!(!stderr(&[]).contains("warning"));
+    assert!(stderr(&["wear.amplitude=1000"]).contains("wear.amplitude: the stroke"));
+    let monotonic = stderr(&[
+        "wear.sliding=monotonic",
+        "wear.speed=1",
+        "wear.step_time=1",
+        "wear.body2={ beta = 1e-8, a = 1.0, b = 1.0 }",
+    ]);
+    assert!(
+        monotonic.contains("wear.body2 under monotonic sliding"),
+        "{monotonic}"
+    );
+}

@@ -422,6 +422,41 @@ pub fn zone_warnings(
     warnings
 }
 
+/// Largest sliding stroke 2u₀, as a fraction of the contact edge's length, that the model's
+/// fixed contact pairs stand for without a warning. The paper's examples slide 2u₀ = 3 mm
+/// under a 60 mm punch and a 209 mm shoe (5 % and 1.4 %); beyond a tenth of the edge a point's
+/// partner moves by more than the zone's features the model resolves.
+pub const STROKE_LIMIT: f64 = 0.1;
+
+/// Warnings about what the model leaves out, for `run` and `steady`: a reciprocating stroke
+/// that is not small against the contact edge (the contact pairs never move), and body 2
+/// wearing under monotonic sliding (its wear is kept at the partner points, while in reality
+/// it is spread over the whole track).
+pub fn model_warnings(problem: &Problem, contact: &CondensedContact) -> Vec<String> {
+    let Some(wear) = problem.spec.wear.as_ref() else {
+        return Vec::new();
+    };
+    let mut warnings = Vec::new();
+    let x = &contact.points.x;
+    let length: f64 = x.windows(2).map(|w| dist(w[0], w[1])).sum();
+    if wear.sliding != "monotonic" && 2.0 * wear.amplitude > STROKE_LIMIT * length {
+        warnings.push(format!(
+            "warning: {}: wear.amplitude: the stroke 2u₀ = {:.4} mm is {:.0} % of the contact edge's {:.4} mm; the model keeps each contact point's partner fixed, which stands for a stroke small against the contact (README, Fixed contact pairs), so these results describe a shorter stroke",
+            problem.file,
+            2.0 * wear.amplitude,
+            100.0 * 2.0 * wear.amplitude / length,
+            length
+        ));
+    }
+    if wear.sliding == "monotonic" && wear.body2.is_some() {
+        warnings.push(format!(
+            "warning: {}: wear.body2 under monotonic sliding: body 2's wear is kept at the partner points of body 1, as if the same part of body 2 stayed under body 1; in reality it is spread over the whole sliding track (README, Body-2 wear at the partner points)",
+            problem.file
+        ));
+    }
+    warnings
+}
+
 /// The edge ends in contact in a steady state (either half cycle).
 pub fn steady_edge_ends(
     contact: &CondensedContact,
