@@ -5,3 +5,4 @@ pub mod json;
 pub mod steady_check;
 pub mod sweep;
 pub mod validate;
+pub mod warnings;

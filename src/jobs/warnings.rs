@@ -1,0 +1,130 @@
+//! What the results' own checks say beyond their numbers: contact zones cut by the named edge
+//! or not resolved by body 2's mesh, and what the model leaves out. Each as a summary.json
+//! entry and a console warning.
+
+use crate::contact::CondensedContact;
+use crate::jobs::json::{number, numbers};
+use crate::problem::Problem;
+use serde_json::{json, Value};
+
+fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// `edge_ends_in_contact` of summary.json: one object per end of the named contact edge that
+/// carries pressure where body 1's surface goes on (`point` index, `x`, `z` mm, `pressure`
+/// MPa); an empty list when the contact zone lies inside the edge or ends at corners.
+pub fn edge_ends_json(ends: &[crate::contact::EdgeEnd]) -> Value {
+    Value::Array(
+        ends.iter()
+            .map(|e| json!({ "point": e.point, "x": number(e.x[0]), "z": number(e.x[1]), "pressure": number(e.pressure) }))
+            .collect(),
+    )
+}
+
+/// The console warning for `ends` (None when there are none): the contact zone was cut by
+/// where the contact edge was named, not found by the model.
+pub fn edge_ends_warning(problem: &Problem, ends: &[crate::contact::EdgeEnd]) -> Option<String> {
+    let edge = problem
+        .spec
+        .contact
+        .as_ref()
+        .map_or("", |c| c.edge.as_str());
+    ends.first()?;
+    let at: Vec<String> = ends
+        .iter()
+        .map(|e| format!("({:.4}, {:.4}) with {:.4} MPa", e.x[0], e.x[1], e.pressure))
+        .collect();
+    Some(format!(
+        "warning: {}: the contact reaches the end of contact edge \"{edge}\" at {} where body 1's surface goes on: the contact zone is bounded by the model, not found by it; name a longer edge (docs/problem-files.md, [contact])",
+        problem.file,
+        at.join(" and ")
+    ))
+}
+
+/// `coarse_partner_zones` of summary.json: one object per contact zone that body 2's mesh does
+/// not resolve (first and last point index and position, mm; body 2's elements across it;
+/// body 2's and body 1's element lengths at its worse end, mm); an empty list when none.
+pub fn coarse_zones_json(zones: &[crate::contact::CoarseZone]) -> Value {
+    Value::Array(
+        zones
+            .iter()
+            .map(|z| json!({ "points": z.points, "from": numbers(&z.from), "to": numbers(&z.to), "partner_elements_across": number(z.partner_elements_across), "partner_element_length": number(z.partner_element_length), "element_length": number(z.element_length) }))
+            .collect(),
+    )
+}
+
+/// The console warnings on where the contact zones of `pressures` end: cut by the named
+/// edge ([`edge_ends_warning`]), or inside a coarse element of body 2.
+pub fn zone_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    pressures: &[&[f64]],
+) -> Vec<String> {
+    let mut warnings: Vec<String> =
+        edge_ends_warning(problem, &contact.edge_ends_in_contact(pressures))
+            .into_iter()
+            .collect();
+    if let Some(n) = contact.too_few_points_in_contact(pressures) {
+        warnings.push(format!(
+            "warning: {}: only {n} contact point(s) carry pressure: the mesh does not resolve the contact zone, and the pressure there is a mean over the point's share of the edge, not a profile. Refine body 1's contact edge (smaller elements or a higher p) until the zone spans several points",
+            problem.file
+        ));
+    }
+    if let Some(x) = contact.unmatched_line_in_contact(pressures) {
+        warnings.push(format!(
+            "warning: {}: contact.discretisation = \"collocation\" with a line of body 2 inside one of body 1's contact elements (at ({:.4}, {:.4})): one-point partners make the pressure oscillate there by several percent of its peak. Use the default \"mortar\", or match body 2's mesh lines to body 1's",
+            problem.file, x[0], x[1]
+        ));
+    }
+    for z in contact.coarse_partner_zones(pressures) {
+        warnings.push(format!(
+            "warning: {}: the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 2 of {:.4} mm, coarser than body 1's {:.4} mm there, and only {:.1} of body 2's elements span it: the pressure near the zone's ends can be off by a few percent of its peak (body 2's discretisation error). Refine body 2 there to no coarser than body 1, or to about {} elements across the zone, or put one of its mesh lines at the zone's end (docs/validation.md, Mortar contact)",
+            problem.file, z.from[0], z.from[1], z.to[0], z.to[1], z.partner_element_length, z.element_length, z.partner_elements_across, crate::contact::resolution::RESOLVED_ACROSS
+        ));
+    }
+    warnings
+}
+
+/// Largest sliding stroke 2u₀, as a fraction of the contact edge's length, that the model's
+/// fixed contact pairs stand for without a warning. The paper's examples slide 2u₀ = 3 mm
+/// under a 60 mm punch and a 209 mm shoe (5 % and 1.4 %); beyond a tenth of the edge a point's
+/// partner moves by more than the zone's features the model resolves.
+pub const STROKE_LIMIT: f64 = 0.1;
+
+/// Warnings about what the model leaves out, for `run` and `steady`: a reciprocating stroke
+/// that is not small against the contact edge (the contact pairs never move), and body 2
+/// wearing under monotonic sliding (its wear is kept at the partner points, while in reality
+/// it is spread over the whole track).
+pub fn model_warnings(problem: &Problem, contact: &CondensedContact) -> Vec<String> {
+    let Some(wear) = problem.spec.wear.as_ref() else {
+        return Vec::new();
+    };
+    let mut warnings = Vec::new();
+    let x = &contact.points.x;
+    let length: f64 = x.windows(2).map(|w| dist(w[0], w[1])).sum();
+    if wear.sliding != "monotonic" && 2.0 * wear.amplitude > STROKE_LIMIT * length {
+        warnings.push(format!(
+            "warning: {}: wear.amplitude: the stroke 2u₀ = {:.4} mm is {:.0} % of the contact edge's {:.4} mm; the model keeps each contact point's partner fixed, which stands for a stroke small against the contact (README, Fixed contact pairs), so these results describe a shorter stroke",
+            problem.file,
+            2.0 * wear.amplitude,
+            100.0 * 2.0 * wear.amplitude / length,
+            length
+        ));
+    }
+    if wear.sliding == "monotonic" && wear.body2.is_some() {
+        warnings.push(format!(
+            "warning: {}: wear.body2 under monotonic sliding: body 2's wear is kept at the partner points of body 1, as if the same part of body 2 stayed under body 1; in reality it is spread over the whole sliding track (README, Body-2 wear at the partner points)",
+            problem.file
+        ));
+    }
+    warnings
+}
+
+/// The edge ends in contact in a steady state (either half cycle).
+pub fn steady_edge_ends(
+    contact: &CondensedContact,
+    state: &crate::steady::SteadyState,
+) -> Vec<crate::contact::EdgeEnd> {
+    contact.edge_ends_in_contact(&[&state.p_plus, &state.p_minus])
+}
