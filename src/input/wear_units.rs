@@ -119,7 +119,7 @@ pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
         0 => {
             return bad(
                 "steps",
-                "give the duration: steps, cycles or distance (m)".into(),
+                "give the duration: steps (at least 1; 0 counts as not given), cycles or distance (m)".into(),
             )
         }
         1 => {}
