@@ -116,12 +116,11 @@ pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
         spec.distance.is_some(),
     ];
     match given.iter().filter(|g| **g).count() {
-        0 => {
-            return bad(
-                "steps",
-                "give the duration: steps (at least 1; 0 counts as not given), cycles or distance (m)".into(),
-            )
-        }
+        0 => return bad(
+            "steps",
+            "give the duration: steps (at least 1; 0 counts as not given), cycles or distance (m)"
+                .into(),
+        ),
         1 => {}
         _ => {
             return bad(
