@@ -105,9 +105,10 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct AdaptiveSpec {
-    /// Local error allowed per macro step, as a pressure relative to the macro step's peak
-    /// pressure (dimensionless; default 1e-2). It bounds the first-order error of the fine
-    /// cycles; the extrapolated shape the run continues from is far closer (second order).
+    /// Local error allowed per step, as a pressure relative to the step's peak pressure
+    /// (dimensionless; default 1e-2). BDF2: the estimated error of the cycle itself (second
+    /// order). Step doubling: the first-order error of the fine cycles of a macro step; the
+    /// extrapolated shape the run continues from is far closer (second order).
     #[serde(default = "default_local_tolerance")]
     pub tolerance: f64,
     /// The run stops when the last cycle's wear is a rigid motion to this relative accuracy
