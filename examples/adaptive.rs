@@ -6,13 +6,15 @@
 //! - *process*: k = 1 throughout, one step per half period: the half-period scheme without
 //!   extrapolation, the closest the integration gets to the process itself;
 //! - *paper*: k = 1, 5, 10, continued with k = 10 beyond its 1700 steps until it gets there;
-//! - *adaptive, first order*: `[wear.adaptive]` with `richardson = false`;
-//! - *adaptive*: `[wear.adaptive]` as shipped (step doubling with Richardson extrapolation).
+//! - *step doubling, first order*: `[wear.adaptive]` with `method = "step_doubling"` and
+//!   `richardson = false`;
+//! - *step doubling*: `method = "step_doubling"` (with Richardson extrapolation);
+//! - *BDF2*: `[wear.adaptive]` as shipped (`method = "bdf2"`).
 //!
 //! Every step's pressure is compared with `wearfem steady` on the same mesh
-//! ([`wearfem::wear::WearHistory::half_periods_to_reach`]). The adaptive run is also reported
-//! where it stops by itself. `ADAPTIVE_EXTRA="max_factor = 32"` adds keys to
-//! `[wear.adaptive]`.
+//! ([`wearfem::wear::WearHistory::half_periods_to_reach`]). The adaptive runs are also
+//! reported where they stop by themselves. `ADAPTIVE_EXTRA="max_factor = 32"` adds keys to
+//! `[wear.adaptive]` of all three.
 
 use wearfem::driver;
 use wearfem::problem::Problem;
@@ -54,8 +56,8 @@ fn main() {
     };
     let extra = std::env::var("ADAPTIVE_EXTRA").unwrap_or_default();
     println!("Half periods (steps, contact solves) to 0.5 % of the steady peak pressure:\n");
-    println!("| E | points | process (k = 1) | paper's schedule | adaptive, first order | adaptive | adaptive stops at, distance |");
-    println!("|---|---|---|---|---|---|---|");
+    println!("| E | points | process (k = 1) | paper's schedule | step doubling, first order | step doubling | BDF2 | step doubling stops at, distance | BDF2 stops at, distance |");
+    println!("|---|---|---|---|---|---|---|---|---|");
     for e in elements {
         let text = wearfem::examples::refined_punch("punch-b40", e).expect("punch-b40 refines");
         let (state, contact, _) =
@@ -67,36 +69,45 @@ fn main() {
         let run = |problem: Problem| driver::wear(&problem, None, |_| {}).unwrap().history;
         let process = run(every_step(&text, 20_000, "extrapolation = [{ k = 1 }]"));
         let paper = run(every_step(&text, 8000, ""));
-        let first_order = run(every_step(
-            &text,
-            4000,
-            &format!("\n[wear.adaptive]\nrichardson = false\n{extra}"),
-        ));
-        let adaptive = run(every_step(
-            &text,
-            4000,
-            &format!("\n[wear.adaptive]\n{extra}"),
-        ));
-        let last = adaptive.steps.last().unwrap();
-        let distance = adaptive
-            .p_plus
-            .iter()
-            .zip(plus)
-            .chain(adaptive.p_minus.iter().zip(minus))
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0, f64::max)
-            / peak;
+        let adaptive = |keys: &str| {
+            run(every_step(
+                &text,
+                4000,
+                &format!("\n[wear.adaptive]\n{keys}\n{extra}"),
+            ))
+        };
+        let first_order = adaptive("method = \"step_doubling\"\nrichardson = false");
+        let doubling = adaptive("method = \"step_doubling\"");
+        let bdf2 = adaptive("");
+        // Where a run stops: "half periods (steps, solves), distance from the steady state".
+        let stop = |history: &WearHistory| {
+            let last = history.steps.last().unwrap();
+            let distance = history
+                .p_plus
+                .iter()
+                .zip(plus)
+                .chain(history.p_minus.iter().zip(minus))
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max)
+                / peak;
+            format!(
+                "{} ({}, {}), {:.2} %",
+                last.half_period,
+                last.step,
+                history.solves,
+                100.0 * distance
+            )
+        };
         println!(
-            "| {e} | {} | {} | {} | {} | {} | {} ({}, {}), {:.2} % |",
+            "| {e} | {} | {} | {} | {} | {} | {} | {} | {} |",
             contact.len(),
             reach(&process, plus, minus, peak),
             reach(&paper, plus, minus, peak),
             reach(&first_order, plus, minus, peak),
-            reach(&adaptive, plus, minus, peak),
-            last.half_period,
-            last.step,
-            adaptive.solves,
-            100.0 * distance
+            reach(&doubling, plus, minus, peak),
+            reach(&bdf2, plus, minus, peak),
+            stop(&doubling),
+            stop(&bdf2),
         );
     }
 }

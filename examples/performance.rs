@@ -17,11 +17,13 @@ fn main() {
             let (name, elements) = spec.split_once('@').unwrap();
             let mut text = wearfem::examples::refined_punch(name, elements.parse().unwrap())
                 .expect("a punch example and a positive number of elements");
-            // WEARFEM_ADAPTIVE=1: the adaptive schedule instead of the paper's.
-            if std::env::var_os("WEARFEM_ADAPTIVE").is_some() {
+            // WEARFEM_ADAPTIVE=1: the adaptive schedule instead of the paper's; any other value
+            // is added to `[wear.adaptive]` (e.g. WEARFEM_ADAPTIVE='method = "step_doubling"').
+            if let Ok(keys) = std::env::var("WEARFEM_ADAPTIVE") {
+                let keys = if keys == "1" { String::new() } else { keys };
                 text = text.replace("steps = 1700 ", "steps = 100000 ").replace(
                     "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]",
-                    "record = []\n\n[wear.adaptive]",
+                    &format!("record = []\n\n[wear.adaptive]\n{keys}"),
                 );
             }
             Problem::from_toml(&text, &spec).unwrap()

@@ -43,9 +43,11 @@ fn study(label: &str, text: &str) {
     // A state the Newton iteration did not finish is no reference.
     assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
     let steady_total = t.elapsed().as_secs_f64();
+    // ADAPTIVE_EXTRA adds keys to `[wear.adaptive]` (e.g. `method = "step_doubling"`).
+    let extra = std::env::var("ADAPTIVE_EXTRA").unwrap_or_default();
     let adaptive_text = text.replace("steps = 1700 ", "steps = 100000 ").replace(
         "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]",
-        "record = []\n\n[wear.adaptive]",
+        &format!("record = []\n\n[wear.adaptive]\n{extra}"),
     );
     let adaptive_problem = Problem::from_toml(&adaptive_text, label).unwrap();
     let t = Instant::now();

@@ -17,7 +17,7 @@ pub mod kinematics;
 mod outcome;
 mod step;
 mod workspace;
-pub use adaptive::AdaptiveSpec;
+pub use adaptive::{AdaptiveMethod, AdaptiveSpec};
 pub use outcome::{non_rigid_part, steady_distance, SteadyDistance, StopReason};
 use serde::{Deserialize, Serialize};
 

@@ -1,5 +1,6 @@
-//! The adaptive schedule (`[wear.adaptive]`, src/wear/adaptive.rs): step doubling with
-//! Richardson extrapolation. References: the steady state computed directly on the same mesh
+//! The adaptive schedule (`[wear.adaptive]`, src/wear/adaptive.rs): BDF2 with a
+//! predictor–corrector error estimate (the default) and step doubling with Richardson
+//! extrapolation. References: the steady state computed directly on the same mesh
 //! (src/steady_state/steady.rs, checked against eq. 19 and 23 in tests/steady.rs) and, for
 //! how fast the transient decays, the half-period scheme with k = 1 (one step per half
 //! period, the closest the integration comes to the process itself).
@@ -62,12 +63,16 @@ fn richardson_extrapolation_removes_the_lag_of_large_steps() {
         &run(&punch(
             8,
             4000,
-            "\n[wear.adaptive]\nmax_factor = 64\nrichardson = false",
+            "\n[wear.adaptive]\nmethod = \"step_doubling\"\nmax_factor = 64\nrichardson = false",
         )),
         &reference,
     );
     let adaptive = reach(
-        &run(&punch(8, 4000, "\n[wear.adaptive]\nmax_factor = 64")),
+        &run(&punch(
+            8,
+            4000,
+            "\n[wear.adaptive]\nmethod = \"step_doubling\"\nmax_factor = 64",
+        )),
         &reference,
     );
     // A run is compared with the reference once per cycle, and a cycle spans up to
@@ -84,12 +89,36 @@ fn richardson_extrapolation_removes_the_lag_of_large_steps() {
     );
 }
 
+#[test]
+fn bdf2_has_no_first_order_lag() {
+    // BDF2 with k up to 32 (cycles of 64 half periods), where backward Euler lags by more
+    // than two cycles (previous test): its decay factor per step is e^(−z)(1 + O(z³)), so
+    // it gets there within the one cycle a run can resolve.
+    let reference = steady(8);
+    let process = reach(
+        &run(&punch(8, 20_000, "extrapolation = [{ k = 1 }]")),
+        &reference,
+    );
+    let bdf2 = reach(
+        &run(&punch(8, 4000, "\n[wear.adaptive]\nmax_factor = 32")),
+        &reference,
+    );
+    assert!(
+        bdf2.abs_diff(process) <= 64,
+        "BDF2 {bdf2}, process {process} half periods"
+    );
+}
+
 /// Issue 9: the adaptive schedule reaches the steady state in fewer half periods than the
 /// paper's (k = 1, 5, 10, continued with 10), and stops there by itself.
-fn fewer_half_periods_than_the_paper(elements: usize) {
+fn fewer_half_periods_than_the_paper(elements: usize, keys: &str) {
     let reference = steady(elements);
     let paper = reach(&run(&punch(elements, 8000, "")), &reference);
-    let history = run(&punch(elements, 4000, "\n[wear.adaptive]"));
+    let history = run(&punch(
+        elements,
+        4000,
+        &format!("\n[wear.adaptive]\n{keys}"),
+    ));
     let adaptive = reach(&history, &reference);
     assert!(
         adaptive < paper,
@@ -118,34 +147,50 @@ fn fewer_half_periods_than_the_paper(elements: usize) {
 
 #[test]
 fn adaptive_schedule_beats_the_papers_on_the_shipped_mesh() {
-    fewer_half_periods_than_the_paper(8);
+    fewer_half_periods_than_the_paper(8, "");
 }
 
 #[test]
 fn adaptive_schedule_beats_the_papers_on_a_refined_mesh() {
-    fewer_half_periods_than_the_paper(32);
+    fewer_half_periods_than_the_paper(32, "");
 }
 
 #[test]
-fn adaptive_schedule_with_a_nonlinear_wear_law_on_a_refined_mesh() {
-    // b = 1.2 (Newton inside every step) at 32 elements under the punch: the run stops by
-    // itself within 0.25 % of the peak of the directly computed steady state (the same
-    // bound, and the same reason, as above).
-    let text = wearfem::examples::refined_punch("punch-b40-b1.2", 32).expect("refines");
-    let text = text.replace("steps = 1700 ", "steps = 20000 ").replace(
-        "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]",
-        "record = []\n\n[wear.adaptive]",
+fn step_doubling_beats_the_papers_schedule_too() {
+    fewer_half_periods_than_the_paper(8, "method = \"step_doubling\"");
+}
+
+/// `name` refined to 32 elements under the punch with `edit` applied, run with the adaptive
+/// schedule: it must stop by itself within 0.25 % of the peak of the directly computed
+/// steady state (the same bound, and the same reason, as above), with no failed solve.
+fn stops_at_the_steady_state(name: &str, edit: (&str, &str)) {
+    let text = wearfem::examples::refined_punch(name, 32).expect("refines");
+    assert!(text.contains(edit.0), "{name}: {}", edit.0);
+    let text = text
+        .replace(edit.0, edit.1)
+        .replace("steps = 1700 ", "steps = 20000 ")
+        .replace("steps = 2500 ", "steps = 20000 ");
+    let start = text.find("record = [").expect("record");
+    let end = start + text[start..].find(']').expect("record list") + 1;
+    let text = format!(
+        "{}record = []\n\n[wear.adaptive]{}",
+        &text[..start],
+        &text[end..]
     );
-    let problem = Problem::from_toml(&text, "b1.2 at 32 elements").unwrap();
+    let problem = Problem::from_toml(&text, name).unwrap();
     let history = run(&problem);
     assert!(
         matches!(history.stopped, Some((_, StopReason::SteadyState))),
-        "{:?}",
+        "{name}: {:?}",
         history.stopped
     );
     let (state, _, _) = driver::steady(&problem).expect("steady");
     assert_eq!(state.status, SteadyStatus::Solved);
-    let peak = state.p_plus.iter().fold(0.0f64, |a, p| a.max(*p));
+    let peak = state
+        .p_plus
+        .iter()
+        .chain(&state.p_minus)
+        .fold(0.0f64, |a, p| a.max(*p));
     let worst = history
         .p_plus
         .iter()
@@ -153,5 +198,37 @@ fn adaptive_schedule_with_a_nonlinear_wear_law_on_a_refined_mesh() {
         .chain(history.p_minus.iter().zip(&state.p_minus))
         .map(|(a, b)| (a - b).abs())
         .fold(0.0, f64::max);
-    assert!(worst < 0.0025 * peak, "{worst:.4} MPa of {peak:.3}");
+    assert!(
+        worst < 0.0025 * peak,
+        "{name} {edit:?}: {worst:.4} MPa of {peak:.3}"
+    );
+}
+
+#[test]
+fn adaptive_schedule_with_a_nonlinear_wear_law_on_a_refined_mesh() {
+    // b = 1.2 (Newton inside every step).
+    stops_at_the_steady_state("punch-b40-b1.2", ("", ""));
+}
+
+#[test]
+fn adaptive_schedule_with_a_steep_wear_law_on_a_refined_mesh() {
+    // b = 2: the wear term's slope grows with the pressure (the stiffest case of the three).
+    stops_at_the_steady_state("punch-b40", ("a = 1.0, b = 1.0 }", "a = 1.0, b = 2.0 }"));
+}
+
+#[test]
+fn adaptive_schedule_with_a_flat_wear_law_on_a_refined_mesh() {
+    // b = 0.8: Newton with the secant slope.
+    stops_at_the_steady_state("punch-b40-b0.8", ("", ""));
+}
+
+#[test]
+fn adaptive_schedule_with_both_bodies_wearing_on_a_refined_mesh() {
+    stops_at_the_steady_state(
+        "punch-b40",
+        (
+            "sliding = \"reciprocating\"",
+            "body2 = { beta = 2e-8, a = 1.0, b = 1.0 }\nsliding = \"reciprocating\"",
+        ),
+    );
 }

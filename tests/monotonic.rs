@@ -45,35 +45,40 @@ fn pinned_punch_wears_to_the_linear_pressure_of_the_rigid_wear_velocity() {
 
 #[test]
 fn adaptive_schedule_finds_the_uniform_pressure_under_monotonic_sliding() {
-    // Step doubling under monotonic sliding: every step is a cycle, the coarse one a single
-    // step of 2k. The run must stop by itself at the steady state of eq. 8 (uniform p̃).
-    let r = run(
-        &problem(
-            "punch-a",
-            &[
-                MONOTONIC,
-                ("steps = 1700 ", "steps = 100000 "),
-                (
-                    "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]",
-                    "record = []\n\n[wear.adaptive]",
-                ),
-            ],
-        ),
-        None,
-    );
-    let h = &r.history;
-    assert!(
-        matches!(h.stopped, Some((_, StopReason::SteadyState))),
-        "{:?}",
-        h.stopped
-    );
-    let p_tilde = 16.666;
-    for (i, p) in h.p_plus.iter().enumerate() {
-        // 0.5 %: the run stops when the distance it predicts is below steady_tolerance = 0.1 %
-        // of the peak; the prediction is an estimate, not a bound.
-        assert!(
-            (p - p_tilde).abs() < 5e-3 * p_tilde,
-            "point {i}: p = {p:.4} MPa"
+    // Under monotonic sliding every step is a cycle: one BDF2 step, or for step doubling
+    // a coarse single step of 2k and two fine ones. The run must stop by itself at the
+    // steady state of eq. 8 (uniform p̃), with either method.
+    for method in ["bdf2", "step_doubling"] {
+        let adaptive = format!("record = []\n\n[wear.adaptive]\nmethod = \"{method}\"");
+        let r = run(
+            &problem(
+                "punch-a",
+                &[
+                    MONOTONIC,
+                    ("steps = 1700 ", "steps = 100000 "),
+                    (
+                        "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]",
+                        adaptive.as_str(),
+                    ),
+                ],
+            ),
+            None,
         );
+        let h = &r.history;
+        assert!(
+            matches!(h.stopped, Some((_, StopReason::SteadyState))),
+            "{method}: {:?}",
+            h.stopped
+        );
+        assert_eq!(h.failed_solves, 0, "{method}");
+        let p_tilde = 16.666;
+        for (i, p) in h.p_plus.iter().enumerate() {
+            // 0.5 %: the run stops when the distance it predicts is below
+            // steady_tolerance = 0.1 % of the peak; the prediction is an estimate, not a bound.
+            assert!(
+                (p - p_tilde).abs() < 5e-3 * p_tilde,
+                "{method}, point {i}: p = {p:.4} MPa"
+            );
+        }
     }
 }

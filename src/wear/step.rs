@@ -2,7 +2,7 @@
 //! iterated to criterion eq. 27, with Aitken relaxation), plain explicit sub-stepping for
 //! checks, the histories, and the shift of the shape to zero at a chosen point.
 
-use super::adaptive::Controller;
+use super::adaptive::{AdaptiveMethod, Controller};
 use super::workspace::{mean_positive, pointwise_change, SolveCount, StepOutcome, Workspace};
 use super::{
     steady_distance, Snapshot, StepRecord, StopReason, WearHistory, WearIntegrator,
@@ -57,7 +57,10 @@ impl WearIntegrator {
             .shape_zero_at
             .map(|x0| interpolation_weights(points, x0));
         let mut controller = self.spec.adaptive.map(Controller::new);
-        let mut doubling = controller.as_ref().map(|_| StepDoubling::new(&ws));
+        let method = self.spec.adaptive.map(|a| a.method);
+        let mut doubling =
+            (method == Some(AdaptiveMethod::StepDoubling)).then(|| StepDoubling::new(&ws));
+        let mut bdf2 = (method == Some(AdaptiveMethod::Bdf2)).then(|| Bdf2::new(monotonic));
         let mut half_periods = 0;
         for step in 1..=self.spec.steps {
             // Odd steps slide in the first direction (contact.direction), even ones back.
@@ -88,12 +91,19 @@ impl WearIntegrator {
                     self.coarse_cycle(solver, 2 * k, d, zero_at.as_deref(), points, &mut count);
                 }
             }
+            // The weight of the wear term: k, or for BDF2 (2/3) k (k in its first cycle),
+            // whose cycle starts from the known part (4 g_n − g_v)/3 instead of g_n.
+            let weight = match bdf2.as_mut() {
+                Some(b) if first_half => b.begin_cycle(&mut shape, k),
+                Some(b) => b.weight,
+                None => k as f64,
+            };
             // The first half cycle of a cycle sees the wear the second one is about to add
             // (its value of the last cycle): both then see the cycle's end shape.
             let look_ahead = first_half && !monotonic && self.spec.substeps == 0;
-            set_look_ahead(&mut ws, if look_ahead { k } else { 0 });
+            set_look_ahead(&mut ws, if look_ahead { weight } else { 0.0 });
             let outcome = if count.first_failure.is_none() {
-                self.step(solver, &mut shape, direction, k, &mut ws, &mut count)
+                self.step(solver, &mut shape, direction, weight, &mut ws, &mut count)
             } else {
                 StepOutcome::default()
             };
@@ -162,6 +172,10 @@ impl WearIntegrator {
                             step > 4 && c.end_macro_step(local, change, peak, distance.wear);
                     }
                 }
+                if let (Some(c), Some(b)) = (controller.as_mut(), bdf2.as_mut()) {
+                    let (local, change, peak) = b.end_cycle(k, &hist.p_plus, minus);
+                    steady_now = step > 4 && c.end_macro_step(local, change, peak, distance.wear);
+                }
             }
             let record = StepRecord {
                 step,
@@ -217,8 +231,15 @@ impl WearIntegrator {
                 self.first_direction.reversed()
             };
             let ws = &mut doubling.ws;
-            set_look_ahead(ws, if half == 0 && !monotonic { k } else { 0 });
-            self.step(solver, &mut doubling.shape, direction, k, ws, count);
+            set_look_ahead(
+                ws,
+                if half == 0 && !monotonic {
+                    k as f64
+                } else {
+                    0.0
+                },
+            );
+            self.step(solver, &mut doubling.shape, direction, k as f64, ws, count);
             if count.first_failure.is_some() {
                 return;
             }
@@ -229,14 +250,16 @@ impl WearIntegrator {
         }
     }
 
-    /// One step by the scheme the spec names. Leaves in `ws.increment` the wear of one half
-    /// period and in `ws.solution` the contact solution it was computed from.
+    /// One step by the scheme the spec names, the wear of one half period weighted by `k`
+    /// (the extrapolation factor; (2/3) k for the adaptive BDF2). Leaves in `ws.increment`
+    /// the wear of one half period and in `ws.solution` the contact solution it was
+    /// computed from.
     fn step(
         &self,
         solver: &mut ContactSolver,
         shape: &mut [f64],
         direction: Direction,
-        k: usize,
+        k: f64,
         ws: &mut Workspace,
         count: &mut SolveCount,
     ) -> StepOutcome {
@@ -266,7 +289,7 @@ impl WearIntegrator {
         solver: &mut ContactSolver,
         shape: &mut [f64],
         direction: Direction,
-        k: usize,
+        k: f64,
         ws: &mut Workspace,
         count: &mut SolveCount,
     ) -> usize {
@@ -289,7 +312,7 @@ impl WearIntegrator {
                     }
                 })
                 .collect();
-            self.wear_increment(&ws.solution.pressure, &part, k as f64, &mut ws.increment);
+            self.wear_increment(&ws.solution.pressure, &part, k, &mut ws.increment);
             for ((g, total), w) in shape
                 .iter_mut()
                 .zip(ws.new_increment.iter_mut())
@@ -301,7 +324,7 @@ impl WearIntegrator {
         }
         count.track(solver.solve_into(shape, direction, &mut ws.solution));
         for i in 0..shape.len() {
-            ws.increment[i] = ws.new_increment[i] / k as f64;
+            ws.increment[i] = ws.new_increment[i] / k;
         }
         m
     }
@@ -326,12 +349,12 @@ impl WearIntegrator {
         solver: &mut ContactSolver,
         shape: &mut [f64],
         direction: Direction,
-        k: usize,
+        k: f64,
         ws: &mut Workspace,
         count: &mut SolveCount,
     ) -> StepOutcome {
         let n = shape.len();
-        let kf = k as f64;
+        let kf = k;
         let linear = self.laws.iter().all(|l| l.b == 1.0);
         if linear {
             let c: f64 = self
@@ -443,14 +466,14 @@ impl WearIntegrator {
         solver: &mut ContactSolver,
         shape: &mut [f64],
         direction: Direction,
-        k: usize,
+        k: f64,
         ws: &mut Workspace,
         count: &mut SolveCount,
     ) -> StepOutcome {
         let n = shape.len();
         let sliding = &ws.sliding;
         count.track(solver.solve_into(shape, direction, &mut ws.solution));
-        self.wear_increment(&ws.solution.pressure, sliding, k as f64, &mut ws.increment);
+        self.wear_increment(&ws.solution.pressure, sliding, k, &mut ws.increment);
         let (mut iterations, mut criterion, mut converged) = (0, 0.0, false);
         // The fixed-point iteration is a contraction only while k·∂W/∂p times the contact
         // compliance stays below one, which large k or b > 1 break. Aitken's dynamic relaxation
@@ -463,12 +486,7 @@ impl WearIntegrator {
                 *t = g + w;
             }
             count.track(solver.solve_into(&ws.trial, direction, &mut ws.solution));
-            self.wear_increment(
-                &ws.solution.pressure,
-                &ws.sliding,
-                k as f64,
-                &mut ws.new_increment,
-            );
+            self.wear_increment(&ws.solution.pressure, &ws.sliding, k, &mut ws.new_increment);
             criterion = self.criterion(shape, ws);
             if criterion <= self.spec.tolerance {
                 converged = true;
@@ -499,7 +517,7 @@ impl WearIntegrator {
         for (g, w) in shape.iter_mut().zip(ws.increment.iter_mut()) {
             *g += *w;
             // Report one half period's wear, not k of them.
-            *w /= k as f64;
+            *w /= k;
         }
         StepOutcome {
             iterations,
@@ -556,9 +574,9 @@ fn interpolation_weights(points: &ContactPoints, x0: f64) -> Vec<(usize, f64)> {
 
 /// Set the look-ahead of a first half cycle: k times the last second half cycle's wear of
 /// one half period (0 for no look-ahead).
-fn set_look_ahead(ws: &mut Workspace, k: usize) {
+fn set_look_ahead(ws: &mut Workspace, k: f64) {
     for (a, w) in ws.ahead.iter_mut().zip(&ws.second_half) {
-        *a = k as f64 * w;
+        *a = k * w;
     }
 }
 
@@ -605,4 +623,137 @@ impl StepDoubling {
         }
         (local, change, peak)
     }
+}
+
+/// The state of the adaptive schedule's BDF2 ([`super::adaptive`]). A cycle (both half
+/// periods; one step under monotonic sliding) is one BDF2 step of k cycles, in the
+/// fixed-leading-coefficient form: the wear term always has the weight (2/3) k, and the
+/// shape one step back is interpolated from the stored ones when k has just changed.
+struct Bdf2 {
+    /// Time (cycles of factor 1 done) at the start of the current cycle.
+    time: f64,
+    /// The (at most two) cycle-end shapes before the current cycle's start shape, newest
+    /// first, with their times (mm).
+    shapes: Vec<(f64, Vec<f64>)>,
+    /// A buffer for the next stored shape.
+    spare: Vec<f64>,
+    /// Weight of the wear term in the current cycle: k for the first cycle (backward
+    /// Euler), (2/3) k after.
+    weight: f64,
+    /// The last three cycles, newest first: k and the pressures of both half cycles (MPa).
+    history: Vec<(usize, [Vec<f64>; 2])>,
+    /// Under monotonic sliding a cycle has one half.
+    monotonic: bool,
+}
+
+impl Bdf2 {
+    fn new(monotonic: bool) -> Bdf2 {
+        Bdf2 {
+            time: 0.0,
+            shapes: Vec::with_capacity(3),
+            spare: Vec::new(),
+            weight: 0.0,
+            history: Vec::with_capacity(4),
+            monotonic,
+        }
+    }
+
+    /// Start a cycle with factor `k` from `shape` (g_n, the last cycle's end): replace it by
+    /// the known part (4 g_n − g_v)/3 of the BDF2 formula, g_v being the shape k cycles
+    /// back, and return the weight (2/3) k of the wear term. The first cycle is backward
+    /// Euler (weight k, shape unchanged).
+    fn begin_cycle(&mut self, shape: &mut [f64], k: usize) -> f64 {
+        let kf = k as f64;
+        let mut current = std::mem::take(&mut self.spare);
+        current.clear();
+        current.extend_from_slice(shape);
+        self.weight = if self.shapes.is_empty() {
+            kf
+        } else {
+            // g_v by Lagrange interpolation through g_n and the stored shapes at t_n − k:
+            // exactly a stored shape unless k was just halved (the controller doubles k
+            // only after two cycles with the same k).
+            let times: Vec<f64> = std::iter::once(self.time)
+                .chain(self.shapes.iter().map(|(t, _)| *t))
+                .collect();
+            let target = self.time - kf;
+            let w = lagrange(&times, target);
+            for (i, g) in shape.iter_mut().enumerate() {
+                let back = w[0] * current[i]
+                    + self
+                        .shapes
+                        .iter()
+                        .zip(&w[1..])
+                        .map(|((_, stored), wj)| wj * stored[i])
+                        .sum::<f64>();
+                *g = (4.0 * current[i] - back) / 3.0;
+            }
+            2.0 / 3.0 * kf
+        };
+        self.shapes.insert(0, (self.time, current));
+        if self.shapes.len() > 2 {
+            self.spare = self.shapes.pop().map(|(_, s)| s).unwrap_or_default();
+        }
+        self.time += kf;
+        self.weight
+    }
+
+    /// At the end of a cycle with factor `k` and pressures `plus` and `minus` (empty under
+    /// monotonic sliding): the local error estimate (NaN until three cycles are known), the
+    /// change max |p − p_previous| since the last cycle and the peak max p, all MPa.
+    fn end_cycle(&mut self, k: usize, plus: &[f64], minus: &[f64]) -> (f64, f64, f64) {
+        let halves: [&[f64]; 2] = [plus, if self.monotonic { &[] } else { minus }];
+        let (mut local, mut change, mut peak) = (f64::NAN, 0.0f64, 0.0f64);
+        if self.history.len() == 3 {
+            // Milne's device: the quadratic extrapolation of the last three cycles'
+            // pressures to this cycle's end (the predictor, error −C_p p‴ with
+            // C_p = h₀(h₀ + h₁)(h₀ + h₁ + h₂)/6) against the corrector (error C_c p‴,
+            // C_c = (2/9) h₀³): the corrector's share of their difference.
+            let h = [k as f64, self.history[0].0 as f64, self.history[1].0 as f64];
+            let w = lagrange(&[-h[0], -h[0] - h[1], -h[0] - h[1] - h[2]], 0.0);
+            let corrector = 2.0 / 9.0 * h[0].powi(3);
+            let predictor = h[0] * (h[0] + h[1]) * (h[0] + h[1] + h[2]) / 6.0;
+            let share = corrector / (corrector + predictor);
+            let mut worst = 0.0f64;
+            for (half, now) in halves.iter().enumerate() {
+                for (i, &p) in now.iter().enumerate() {
+                    let predicted: f64 = (0..3).map(|j| w[j] * self.history[j].1[half][i]).sum();
+                    worst = worst.max((p - predicted).abs());
+                }
+            }
+            local = share * worst;
+        }
+        for (half, now) in halves.iter().enumerate() {
+            for (i, &p) in now.iter().enumerate() {
+                if let Some(last) = self.history.first() {
+                    change = change.max((p - last.1[half][i]).abs());
+                }
+                peak = peak.max(p);
+            }
+        }
+        let mut entry = if self.history.len() == 3 {
+            self.history.pop().unwrap_or_default()
+        } else {
+            (0, [Vec::new(), Vec::new()])
+        };
+        entry.0 = k;
+        for (half, now) in halves.iter().enumerate() {
+            entry.1[half].clear();
+            entry.1[half].extend_from_slice(now);
+        }
+        self.history.insert(0, entry);
+        (local, change, peak)
+    }
+}
+
+/// Lagrange weights of the polynomial through the nodes `times` evaluated at `at`.
+fn lagrange(times: &[f64], at: f64) -> Vec<f64> {
+    (0..times.len())
+        .map(|j| {
+            (0..times.len())
+                .filter(|&m| m != j)
+                .map(|m| (at - times[m]) / (times[j] - times[m]))
+                .product::<f64>()
+        })
+        .collect()
 }
