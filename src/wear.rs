@@ -15,6 +15,7 @@ use crate::kinematics::{half_period_sliding, paper_schedule};
 mod adaptive;
 pub mod kinematics;
 mod outcome;
+mod schemes;
 mod step;
 mod workspace;
 pub use adaptive::{AdaptiveMethod, AdaptiveSpec};
