@@ -289,26 +289,58 @@ impl Mesh {
         self.vertices.len() - 1
     }
 
-    /// A boundary edge (one element) that has a mesh vertex in its interior betrays a hanging node.
+    /// A boundary edge (one element) that has a mesh vertex in its interior betrays a hanging
+    /// node: two blocks whose lines do not match along a shared side. The vertex may sit
+    /// anywhere along the edge, so its distance to the edge's curve is found (the nearest of
+    /// 16 samples, refined by ternary search), for the vertices inside the edge's box.
     fn check_conforming(&self, tolerance: f64) -> Result<(), MeshError> {
-        let boundary: Vec<&MeshEdge> = self
-            .edges
-            .iter()
-            .filter(|e| e.elements.len() == 1)
-            .collect();
-        for edge in &boundary {
+        const SAMPLES: usize = 16;
+        let near = 1e3 * tolerance;
+        for edge in self.edges.iter().filter(|e| e.elements.len() == 1) {
             let (element, local) = edge.elements[0];
-            let samples: Vec<Point> = (1..8)
-                .map(|k| self.point_on_edge(element, local, -1.0 + 2.0 * k as f64 / 8.0))
+            let at = |t: f64| self.point_on_edge(element, local, t);
+            let samples: Vec<(f64, Point)> = (0..=SAMPLES)
+                .map(|k| {
+                    let t = -1.0 + 2.0 * k as f64 / SAMPLES as f64;
+                    (t, at(t))
+                })
                 .collect();
+            // The box of the samples, widened by a sixteenth of the edge's chord for the
+            // bulge of a curved edge between samples, and by the tolerance.
+            let (first, last) = (samples[0].1, samples[SAMPLES].1);
+            let margin = near + (last[0] - first[0]).hypot(last[1] - first[1]) / SAMPLES as f64;
+            let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+            for (_, p) in &samples {
+                for d in 0..2 {
+                    lo[d] = lo[d].min(p[d] - margin);
+                    hi[d] = hi[d].max(p[d] + margin);
+                }
+            }
             for (id, v) in self.vertices.iter().enumerate() {
-                if edge.vertices.contains(&id) {
+                if edge.vertices.contains(&id) || (0..2).any(|d| v[d] < lo[d] || v[d] > hi[d]) {
                     continue;
                 }
-                for s in &samples {
-                    if (s[0] - v[0]).hypot(s[1] - v[1]) < 1e3 * tolerance {
-                        return Err(MeshError::Hanging { x: v[0], z: v[1] });
+                let distance = |t: f64| {
+                    let p = at(t);
+                    (p[0] - v[0]).hypot(p[1] - v[1])
+                };
+                let best = samples
+                    .iter()
+                    .map(|&(t, _)| t)
+                    .min_by(|&a, &b| distance(a).total_cmp(&distance(b)))
+                    .unwrap_or(0.0);
+                let step = 2.0 / SAMPLES as f64;
+                let (mut a, mut b) = ((best - step).max(-1.0), (best + step).min(1.0));
+                for _ in 0..60 {
+                    let (m1, m2) = (a + (b - a) / 3.0, b - (b - a) / 3.0);
+                    if distance(m1) < distance(m2) {
+                        b = m2;
+                    } else {
+                        a = m1;
                     }
+                }
+                if distance(0.5 * (a + b)) < near {
+                    return Err(MeshError::Hanging { x: v[0], z: v[1] });
                 }
             }
         }
