@@ -82,8 +82,13 @@ fn study(label: &str, text: &str) {
             / range
     };
     let a = &adaptive.history;
+    // Both runs end by comparing their last cycle with the steady state (a Newton solve).
+    let check = |r: &driver::WearRun| match r.steady_check {
+        wearfem::steady_check::SteadyCheck::Compared { seconds, .. } => seconds,
+        _ => 0.0,
+    };
     println!(
-        "| {label} | {n} | {first_m:.2} | {:.4} | {:.4} | {:.2} % | {:.2} % | {:.2} % | {} / {} | {:.2} % | {:.2} % | {:.3} | {:.3} | {:.3} | {:.3} | {:.0} |",
+        "| {label} | {n} | {first_m:.2} | {:.4} | {:.4} | {:.2} % | {:.2} % | {:.2} % | {} / {} | {:.2} % | {:.2} % | {:.3} | {:.3} ({:.3}) | {:.3} ({:.3}) | {:.3} | {:.0} |",
         last_plus.probes[0],
         state.p_plus[m_index],
         100.0 * worst(&h.p_plus, &state.p_plus, peak),
@@ -95,7 +100,9 @@ fn study(label: &str, text: &str) {
         100.0 * shape_error(&a.shape),
         run.setup_seconds,
         run_total,
+        check(&run),
         adaptive_total,
+        check(&adaptive),
         steady_total,
         peak_memory_mb(),
     );
@@ -111,7 +118,7 @@ fn main() {
     } else {
         elements
     };
-    println!("| case | points | p(M) n = 1 (MPa) | p(M) n = 1700 | steady p⁺(M) | run p⁺ − steady (of peak) | run p⁻ − steady | run shape − steady (of range) | adaptive steps / half periods | adaptive p − steady | adaptive shape − steady | set-up (s) | 1700 steps incl. set-up (s) | adaptive incl. set-up (s) | steady incl. set-up (s) | peak memory so far (MB) |");
+    println!("| case | points | p(M) n = 1 (MPa) | p(M) n = 1700 | steady p⁺(M) | run p⁺ − steady (of peak) | run p⁻ − steady | run shape − steady (of range) | adaptive steps / half periods | adaptive p − steady | adaptive shape − steady | set-up (s) | 1700 steps incl. set-up (of which the steady check) (s) | adaptive incl. set-up (of which the steady check) (s) | steady incl. set-up (s) | peak memory so far (MB) |");
     println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for &e in &elements {
         let text = wearfem::examples::refined_punch("punch-b40", e).unwrap();

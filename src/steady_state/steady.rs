@@ -349,6 +349,22 @@ pub fn steady_state(
     sliding: SteadySliding,
     settings: SteadySettings,
 ) -> Result<SteadyState, SteadyError> {
+    steady_state_near(contact, terms, sliding, settings, None)
+}
+
+/// [`steady_state`], starting Newton's method from the pressures `near` (MPa, one profile
+/// per half cycle: '+' then '−', or the one of monotonic sliding) and their contact sets
+/// instead of a uniform pressure everywhere. A wear run's last cycle is such a start: for
+/// b = 1 the steady conditions are linear once the contact sets are right, so Newton's method
+/// then needs one or two steps instead of several active-set changes (the run's steady check
+/// at 1025 points: 0.36 s cold). Should the start lead nowhere, the cold start follows.
+pub fn steady_state_near(
+    contact: &CondensedContact,
+    terms: &[(f64, f64)],
+    sliding: SteadySliding,
+    settings: SteadySettings,
+    near: Option<&[&[f64]]>,
+) -> Result<SteadyState, SteadyError> {
     let (n, m) = (contact.len(), contact.rigid_modes.len());
     if m == 0 {
         return Err(SteadyError::NoRigidMotion);
@@ -390,7 +406,24 @@ pub fn steady_state(
     }
     let mut active = vec![vec![true; n]; system.halves];
     let start = (z.clone(), active.clone());
+    let mut warm_iterations = 0;
+    if let Some(near) = near.filter(|p| p.len() == system.halves && p.iter().all(|q| q.len() == n))
+    {
+        let (mut warm_z, mut warm_active) = (z.clone(), active.clone());
+        for (h, pressure) in near.iter().enumerate() {
+            for (i, &p) in pressure.iter().enumerate() {
+                warm_active[h][i] = p > 0.0;
+                warm_z[system.force(h, i)] = p.max(0.0) * system.area[i];
+            }
+        }
+        let (status, iterations) = system.newton(terms, &mut warm_z, &mut warm_active, settings);
+        if status == SteadyStatus::Solved {
+            return Ok(system.state(sliding, terms, &warm_z, status, iterations));
+        }
+        warm_iterations = iterations;
+    }
     let (mut status, mut iterations) = system.newton(terms, &mut z, &mut active, settings);
+    iterations += warm_iterations;
     if status != SteadyStatus::Solved && terms.iter().any(|t| t.1 != 1.0) {
         // Far from b = 1 the full Newton step from a uniform pressure can wander between
         // active sets; walk there from the linear problem instead.
