@@ -396,7 +396,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let (state, contact, seconds) = driver::steady(&p)?;
             if state.status != wearfem::steady::SteadyStatus::Solved {
                 // Nothing from an unconverged iteration is written as a result.
-                return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written. If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
+                let hint = match state.sliding {
+                    wearfem::steady::SteadySliding::Reciprocating => "If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists",
+                    wearfem::steady::SteadySliding::Monotonic(_) => "With monotonic sliding the friction moment about the pin grows with μ; if it tips the plate onto an edge, no steady state of one rigid wear per step exists",
+                };
+                return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written. {hint}: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds)?;
             if wants_vtk(vtk, &p) {
