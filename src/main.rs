@@ -281,6 +281,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 wearfem::vtk::write_contact_job(&out, &p)?;
             }
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
+            if let Some(w) = driver::penalty_warning(&p, &contact) {
+                eprintln!("{w}");
+            }
             for w in driver::zone_warnings(&p, &contact, &[&solution.pressure]) {
                 eprintln!("{w}");
             }
@@ -348,6 +351,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     println!("last cycle: {against}; wear per period rigid to {:.2e} (relative), δw = {:.3e} mm: {verdict}", d.wear, d.delta_w);
                 }
                 None => println!("no full cycle completed: no final profiles written"),
+            }
+            if let Some(w) = driver::penalty_warning(&p, &result.contact) {
+                eprintln!("{w}");
             }
             for w in driver::model_warnings(&p, &result.contact) {
                 eprintln!("{w}");

@@ -326,3 +326,31 @@ fn model_limits_are_warned_about() {
         "{monotonic}"
     );
 }
+
+/// A soft penalty (contact.method = "penalty") is said to be soft: c_n = 1e5 MPa/mm on
+/// punch-b40 (peak 105 MPa against the exact 188 MPa) warns, c_n = 1e9 (within 0.02 %) not.
+#[test]
+fn a_soft_penalty_is_warned_about() {
+    let stderr = |c_n: &str| {
+        let out =
+            std::env::temp_dir().join(format!("wearfem-penalty-{}-{c_n}", std::process::id()));
+        let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args([
+                "contact",
+                "punch-b40",
+                "--set",
+                "contact.method=penalty",
+                "--set",
+            ])
+            .arg(format!("contact.penalty={c_n}"))
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        let _ = std::fs::remove_dir_all(&out);
+        assert!(result.status.success());
+        String::from_utf8_lossy(&result.stderr).into_owned()
+    };
+    assert!(stderr("1e5").contains("contact.penalty: c_n = 1e5 MPa/mm is soft"));
+    assert!(!stderr("1e9").contains("is soft"));
+}

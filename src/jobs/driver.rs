@@ -14,8 +14,8 @@ use serde_json::{json, Value};
 use std::time::Instant;
 
 pub use super::warnings::{
-    coarse_zones_json, edge_ends_json, edge_ends_warning, model_warnings, steady_edge_ends,
-    zone_warnings, STROKE_LIMIT,
+    coarse_zones_json, edge_ends_json, edge_ends_warning, model_warnings, penalty_warning,
+    steady_edge_ends, zone_warnings, STROKE_LIMIT,
 };
 
 /// Errors of a job: bad input, or a computation that could not be carried out.
