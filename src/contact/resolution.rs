@@ -281,3 +281,60 @@ pub(super) fn unmatched_in_contact(lines: &[UnmatchedLine], pressures: &[&[f64]]
         .find(|l| (l.points[0]..=l.points[1]).any(in_contact))
         .map(|l| l.x)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Points every `h1 / 8` mm from 0 to `length`, body 1's elements `h1` long, body 2's
+    /// `h2` long with lines at multiples of `h2` shifted by `shift`.
+    fn line(length: f64, h1: f64, h2: f64, shift: f64) -> (Vec<Point>, Vec<PointResolution>) {
+        let n = (8.0 * length / h1).round() as usize + 1;
+        let x: Vec<Point> = (0..n).map(|i| [i as f64 * h1 / 8.0, 0.0]).collect();
+        let cells = x
+            .iter()
+            .map(|p| {
+                let offset = (p[0] - shift).rem_euclid(h2);
+                PointResolution {
+                    element_length: h1,
+                    partner_element_length: Some(h2),
+                    partner_line_distance: offset.min(h2 - offset),
+                }
+            })
+            .collect();
+        (x, cells)
+    }
+
+    #[test]
+    fn a_zone_inside_the_edge_needs_six_partner_elements_a_corner_eight() {
+        // Edge 0 … 40 mm, body 1 in 1 mm elements, body 2 in 2 mm ones (coarser) with lines
+        // at odd millimetres: zone ends at whole millimetres are inside partner elements.
+        let (x, cells) = line(40.0, 1.0, 2.0, 1.0);
+        let at = |mm: f64| x.iter().position(|p| (p[0] - mm).abs() < 1e-9).unwrap();
+        // Inside the edge, 10 mm wide: 5 partner elements across (< 6): reported.
+        let zone = assess(&x, &cells, [at(10.0), at(20.0)]).expect("reported");
+        assert!((zone.partner_elements_across - 5.0).abs() < 1e-9);
+        assert_eq!(
+            (zone.partner_element_length, zone.element_length),
+            (2.0, 1.0)
+        );
+        // 14 mm wide: 7 across, enough inside the edge...
+        assert!(assess(&x, &cells, [at(10.0), at(24.0)]).is_none());
+        // ...not at a corner (the edge's first point), which needs 8.
+        assert!(assess(&x, &cells, [0, at(14.0)]).is_some());
+        assert!(assess(&x, &cells, [0, at(18.0)]).is_none());
+        // Ends on partner lines (odd millimetres) are resolved whatever the width.
+        assert!(assess(&x, &cells, [at(11.0), at(15.0)]).is_none());
+        // A partner no coarser than body 1 is never reported.
+        let (x, cells) = line(40.0, 1.0, 1.05, 0.5);
+        assert!(assess(&x, &cells, [at(10.0), at(13.0)]).is_none());
+    }
+
+    #[test]
+    fn one_or_two_points_in_contact_do_not_resolve_a_zone() {
+        assert_eq!(too_few_points(&[&[0.0, 3.0, 0.0, 0.0]]), Some(1));
+        assert_eq!(too_few_points(&[&[0.0, 3.0, 2.0, 1.0]]), None);
+        // No contact at all is not "too few points" (nothing to resolve).
+        assert_eq!(too_few_points(&[&[0.0; 4]]), None);
+    }
+}
