@@ -648,3 +648,36 @@ fn collocation_off_the_lines_and_a_one_point_contact_are_reported() {
     ]));
     assert_eq!(contact.too_few_points_in_contact(&[&sol.pressure]), Some(1));
 }
+
+/// A review's mesh graded towards the contact's centre: body 1's elements of 18 mm hold the
+/// ends of Hertz's 6 mm zone, and the pressures are far off (measured here against the closed
+/// form). It is reported, as body 1's; the shipped 1 mm mesh is not.
+#[test]
+fn a_zone_ending_inside_a_long_element_of_body_1_is_reported() {
+    let (a, p0) = hertz_closed_form("plane_strain");
+    let graded = example_hertz(&[
+        "bodies[0].blocks[0].u=[0.0, 0.45, 0.4999, 0.5, 0.5001, 0.55, 1.0]".into(),
+    ]);
+    let (contact, sol) = solve(&graded);
+    let worst = contact
+        .points
+        .x
+        .iter()
+        .zip(&sol.pressure)
+        .map(|(x, p)| {
+            let exact = if x[0].abs() < a {
+                p0 * (1.0 - (x[0] / a).powi(2)).sqrt()
+            } else {
+                0.0
+            };
+            (p - exact).abs()
+        })
+        .fold(0.0, f64::max);
+    assert!(worst > 0.1 * p0, "worst {worst} MPa");
+    let zones = contact.coarse_partner_zones(&[&sol.pressure]);
+    assert_eq!(zones.len(), 1, "{zones:?}");
+    assert_eq!(zones[0].body, 1);
+    assert!((zones[0].element_length - 18.0).abs() < 1e-9);
+    let (contact, sol) = solve(&example_hertz(&[]));
+    assert!(contact.coarse_partner_zones(&[&sol.pressure]).is_empty());
+}

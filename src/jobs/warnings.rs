@@ -49,7 +49,7 @@ pub fn coarse_zones_json(zones: &[crate::contact::CoarseZone]) -> Value {
     Value::Array(
         zones
             .iter()
-            .map(|z| json!({ "points": z.points, "from": numbers(&z.from), "to": numbers(&z.to), "partner_elements_across": number(z.partner_elements_across), "partner_element_length": number(z.partner_element_length), "element_length": number(z.element_length) }))
+            .map(|z| json!({ "points": z.points, "from": numbers(&z.from), "to": numbers(&z.to), "partner_elements_across": number(z.partner_elements_across), "partner_element_length": number(z.partner_element_length), "element_length": number(z.element_length), "body": z.body }))
             .collect(),
     )
 }
@@ -78,6 +78,14 @@ pub fn zone_warnings(
         ));
     }
     for z in contact.coarse_partner_zones(pressures) {
+        if z.body == 1 {
+            let width = (z.to[0] - z.from[0]).hypot(z.to[1] - z.from[1]);
+            warnings.push(format!(
+                "warning: {}: the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 1 of {:.4} mm, long against the zone's {:.4} mm: body 1's mesh does not resolve the zone's end, and the pressures can be off by several percent of the peak, inside the zone too. Refine body 1 there (elements no longer than a quarter of the zone near its ends) or put a mesh line at the zone's end (docs/problem-files.md, Meshing the contact fine enough)",
+                problem.file, z.from[0], z.from[1], z.to[0], z.to[1], z.element_length, width
+            ));
+            continue;
+        }
         warnings.push(format!(
             "warning: {}: the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 2 of {:.4} mm, coarser than body 1's {:.4} mm there, and only {:.1} of body 2's elements span it: the pressure near the zone's ends can be off by a few percent of its peak (body 2's discretisation error). Refine body 2 there to no coarser than body 1, or to about {} elements across the zone, or put one of its mesh lines at the zone's end (docs/validation.md, Mortar contact)",
             problem.file, z.from[0], z.from[1], z.to[0], z.to[1], z.partner_element_length, z.element_length, z.partner_elements_across, crate::contact::resolution::RESOLVED_ACROSS
