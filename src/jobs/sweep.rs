@@ -52,6 +52,15 @@ impl Sweep {
             }
             // Checks the key's syntax now, before any variant is built.
             Override::new(key, values[0].clone())?;
+            // A key given twice would have its first values overridden by the second in every
+            // variant, while the table still listed both: list all values once instead.
+            if axes.iter().any(|(k, _): &(String, _)| k == key) {
+                return Err(ProblemError {
+                    file: SET.into(),
+                    key: key.into(),
+                    message: "is given twice; give all its values in one list".into(),
+                });
+            }
             axes.push((key.to_string(), values));
         }
         Ok(Sweep { axes })
@@ -251,6 +260,17 @@ pub fn run(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_key_given_twice_is_an_error() {
+        let sets = vec![
+            "contact.friction=[0.1, 0.2]".to_string(),
+            "contact.friction=[0.3]".to_string(),
+        ];
+        let e = Sweep::parse(&sets).unwrap_err();
+        assert_eq!(e.key, "contact.friction");
+        assert!(e.message.contains("given twice"), "{}", e.message);
+    }
 
     #[test]
     fn variants_are_the_cartesian_product_first_key_slowest() {
