@@ -106,22 +106,29 @@ pub fn check(
             (&history.p_minus, &state.p_minus),
         ]
     };
-    let peak = pairs
-        .iter()
-        .flat_map(|(_, s)| s.iter())
-        .fold(0.0f64, |a, &v| a.max(v));
-    let worst = pairs
-        .iter()
-        .flat_map(|(r, s)| r.iter().zip(s.iter()).map(|(a, b)| (a - b).abs()))
-        .fold(0.0f64, f64::max);
-    let lengths_agree = pairs.iter().all(|(r, s)| r.len() == s.len());
-    if peak <= 0.0 || !peak.is_finite() || !lengths_agree || !worst.is_finite() {
+    let Some(pressure) = relative_difference(&pairs) else {
         return SteadyCheck::Unavailable("the steady state carries no pressure".into());
-    }
+    };
     SteadyCheck::Compared {
-        pressure: worst / peak,
+        pressure,
         seconds: start.elapsed().as_secs_f64(),
     }
+}
+
+/// Largest |profile − reference| over the (profile, reference) pairs, relative to the
+/// references' peak pressure; None when the references carry no pressure or a pair differs
+/// in length.
+fn relative_difference(pairs: &[(&[f64], &[f64])]) -> Option<f64> {
+    let peak = pairs
+        .iter()
+        .flat_map(|(_, reference)| reference.iter())
+        .fold(0.0f64, |m, &v| m.max(v));
+    let worst = pairs
+        .iter()
+        .flat_map(|(a, b)| a.iter().zip(b.iter()).map(|(x, y)| (x - y).abs()))
+        .fold(0.0f64, f64::max);
+    let same = pairs.iter().all(|(a, b)| a.len() == b.len());
+    (same && peak > 0.0 && peak.is_finite() && worst.is_finite()).then(|| worst / peak)
 }
 
 /// Largest difference of `a`'s p⁺ and p⁻ from `reference`'s, relative to the reference's
@@ -130,18 +137,8 @@ pub fn pressure_distance(
     a: &crate::steady::SteadyState,
     reference: &crate::steady::SteadyState,
 ) -> Option<f64> {
-    let peak = reference
-        .p_plus
-        .iter()
-        .chain(&reference.p_minus)
-        .fold(0.0f64, |m, &v| m.max(v));
-    let same =
-        a.p_plus.len() == reference.p_plus.len() && a.p_minus.len() == reference.p_minus.len();
-    let worst = a
-        .p_plus
-        .iter()
-        .zip(&reference.p_plus)
-        .chain(a.p_minus.iter().zip(&reference.p_minus))
-        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
-    (same && peak > 0.0 && worst.is_finite()).then(|| worst / peak)
+    relative_difference(&[
+        (&a.p_plus, &reference.p_plus),
+        (&a.p_minus, &reference.p_minus),
+    ])
 }
