@@ -27,25 +27,6 @@ const PRINTED: [(f64, f64); 14] = [
     (1130.0, 0.18279500e-2),
 ];
 
-/// Value at `x` of the profile `v` given at the contact points `xs` (x rising): Lagrange
-/// through the 6 nearest points. Six points of a p = 8 trace away from the corners are good
-/// to well below 0.1 % of the shape's range.
-fn at(xs: &[f64], v: &[f64], x: f64) -> f64 {
-    let mut idx: Vec<usize> = (0..xs.len()).collect();
-    idx.sort_by(|&a, &b| (xs[a] - x).abs().total_cmp(&(xs[b] - x).abs()));
-    let near = &idx[..6];
-    near.iter()
-        .map(|&i| {
-            let l: f64 = near
-                .iter()
-                .filter(|&&j| j != i)
-                .map(|&j| (x - xs[j]) / (xs[i] - xs[j]))
-                .product();
-            l * v[i]
-        })
-        .sum()
-}
-
 fn averaged(name: &str, edits: &[(&str, &str)], reading: AveragedReading) -> (Vec<f64>, Vec<f64>) {
     let p = problem(name, edits);
     let (contact, _, _) = CondensedContact::build(&p).unwrap();
@@ -63,7 +44,7 @@ fn misfit(kind: &str, reading: AveragedReading) -> f64 {
     let largest = PRINTED.iter().map(|p| p.1).fold(0.0, f64::max);
     PRINTED
         .iter()
-        .map(|&(xp, sp)| (at(&x, &shape, xp) - sp).abs())
+        .map(|&(xp, sp)| (wearfem::spline_method::interpolate(&x, &shape, xp) - sp).abs())
         .fold(0.0, f64::max)
         / largest
 }
