@@ -102,6 +102,15 @@ fn zero_degree() {
 }
 
 #[test]
+fn body_degree_out_of_range() {
+    expect_error(
+        &baseline().replacen("[[bodies]]\nname = ", "[[bodies]]\np = 21\nname = ", 1),
+        "body_p_21",
+        &["bodies[0].p", "21"],
+    );
+}
+
+#[test]
 fn clockwise_block() {
     let text = baseline().replace(
         "corners = [[100.0, 0.0], [200.0, 0.0], [0.0, 200.0], [0.0, 100.0]]",

@@ -681,3 +681,47 @@ fn a_zone_ending_inside_a_long_element_of_body_1_is_reported() {
     let (contact, sol) = solve(&example_hertz(&[]));
     assert!(contact.coarse_partner_zones(&[&sol.pressure]).is_empty());
 }
+
+/// Each body can have its own degree (`bodies[i].p`); mortar couples any two. Hertz on
+/// non-matching meshes (body 1 twice as fine as body 2) with body 1 at p = 8 and body 2 at
+/// p = 4 or 12, and the other way round: peak and half-width within the 2 % of the
+/// closed form, and no point-to-point ripple above 1 % of the peak, as with one degree.
+#[test]
+fn bodies_of_different_degrees_meet_hertz() {
+    let kind = "plane_strain";
+    let (a, p0) = hertz_closed_form(kind);
+    for (p1, p2) in [(8, 4), (8, 12), (4, 8), (12, 6)] {
+        let u1 = lines(-20.0, 20.0, 0.5, 5.0, 0.0, &[-12.0, -7.0, 7.0, 12.0]);
+        let u2 = lines(-100.0, 100.0, 0.65, 13.0, 0.3, &[-50.0, -25.0, 25.0, 50.0]);
+        let problem = example_hertz(&[
+            format!("analysis.kind={kind}"),
+            format!("bodies[0].blocks[0].u={u1}"),
+            format!("bodies[1].blocks[0].u={u2}"),
+            format!("bodies[0].p={p1}"),
+            format!("bodies[1].p={p2}"),
+        ]);
+        let (contact, sol) = solve(&problem);
+        // The degrees reached the bodies: body 1's points are its p1 + 1 Lobatto points per
+        // element (shared ends), so the count along its edge is a multiple of p1, plus one.
+        assert_eq!(
+            (contact.len() - 1) % p1,
+            0,
+            "p1 = {p1}: {} points",
+            contact.len()
+        );
+        let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
+        let a_fit = wearfem::validate::hertz_half_width(&contact, &sol);
+        let case = format!("p1 = {p1}, p2 = {p2}");
+        assert!(
+            (peak - p0).abs() < 0.02 * p0,
+            "{case}: peak {peak:.3}, Hertz {p0:.3}"
+        );
+        assert!(
+            (a_fit - a).abs() < 0.02 * a,
+            "{case}: a {a_fit:.4}, Hertz {a:.4}"
+        );
+        let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+        let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * p0);
+        assert!(osc < 0.01 * peak, "{case}: oscillation {osc:.3} MPa");
+    }
+}

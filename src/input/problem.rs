@@ -43,7 +43,8 @@ pub struct Problem {
     pub spec: ProblemSpec,
     /// 2D idealisation with thickness.
     pub analysis: Analysis,
-    /// Degree and space.
+    /// Degree (`analysis.p`, the default of every body; see [`Problem::body_discretisation`])
+    /// and space.
     pub discretisation: Discretisation,
     /// Materials in `spec.materials` order.
     pub materials: Vec<Material>,
@@ -111,6 +112,14 @@ impl Problem {
                 "analysis.p",
                 format!("polynomial degree must be 1..=20, got {}", a.p),
             ));
+        }
+        for (b, body) in spec.bodies.iter().enumerate() {
+            if let Some(p) = body.p.filter(|&p| p == 0 || p > 20) {
+                return Err(err(
+                    &format!("bodies[{b}].p"),
+                    format!("polynomial degree must be 1..=20, got {p}"),
+                ));
+            }
         }
         let space = match a.space.as_str() {
             "tensor" => Space::TensorProduct,
@@ -477,6 +486,14 @@ impl Problem {
         Ok(Constraints { fixed })
     }
 
+    /// Degree and space of body `b`: its own `p` if given, else `analysis.p`.
+    pub fn body_discretisation(&self, b: usize) -> Discretisation {
+        Discretisation {
+            p: self.spec.bodies[b].p.unwrap_or(self.discretisation.p),
+            ..self.discretisation
+        }
+    }
+
     /// Build, assemble and factorise body `b`; `extra_clamped` edges are held (rigid plate).
     pub fn elastic_body(
         &self,
@@ -484,8 +501,9 @@ impl Problem {
         extra_clamped: &[&str],
     ) -> Result<ElasticBody, ProblemError> {
         let mesh = self.mesh(b)?;
-        let dofs = crate::dofs::DofMap::new(&mesh, self.discretisation.p);
-        let basis = crate::basis::QuadBasis::new(self.discretisation.p, self.discretisation.space);
+        let discretisation = self.body_discretisation(b);
+        let dofs = crate::dofs::DofMap::new(&mesh, discretisation.p);
+        let basis = crate::basis::QuadBasis::new(discretisation.p, discretisation.space);
         let constraints = self.constraints(b, &mesh, &dofs, &basis, extra_clamped)?;
         let name = &self.spec.bodies[b].name;
         ElasticBody::new(
@@ -493,7 +511,7 @@ impl Problem {
             mesh,
             self.materials.clone(),
             self.analysis,
-            self.discretisation,
+            discretisation,
             &constraints,
         )
         .map_err(|e| self.error(format!("bodies[{b}].supports"), e.to_string()))

@@ -167,6 +167,11 @@ fn zero() -> OneOrTwo {
 pub struct BodySpec {
     /// Body name.
     pub name: String,
+    /// Polynomial degree of this body's elements; `analysis.p` when absent. A body may be
+    /// given a higher degree than its partner, e.g. a coarse body 2 under a finely meshed
+    /// body 1 (mortar contact couples any two degrees).
+    #[serde(default)]
+    pub p: Option<usize>,
     /// Blocks.
     pub blocks: Vec<BlockSpec>,
     /// Supports.
