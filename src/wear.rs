@@ -127,8 +127,16 @@ pub struct Snapshot {
     pub direction: &'static str,
     /// Pressure at the end of the step, MPa.
     pub pressure: Vec<f64>,
-    /// Shape (accumulated wear gap) at the end of the step, mm.
+    /// Shape at the end of the step, mm: the initial gap plus the wear so far (shifted to
+    /// zero at `shape_zero_at` after each full cycle). After a first half cycle it is the
+    /// cycle's start shape plus k times that half period's wear, whatever the scheme.
     pub shape: Vec<f64>,
+    /// The gap `pressure` is the contact solution of, mm: `shape` after a second half cycle;
+    /// after a first half cycle the step's own shape plus the look-ahead (the wear the
+    /// cycle's second half is about to add; for BDF2 also its known part). Not serialised:
+    /// the ParaView writer re-solves from it so that its fields belong to `pressure`.
+    #[serde(skip)]
+    pub contact_shape: Vec<f64>,
 }
 
 /// One row of the step history.
@@ -167,8 +175,12 @@ pub struct WearHistory {
     pub p_plus: Vec<f64>,
     /// Pressure of the last '−' step, MPa.
     pub p_minus: Vec<f64>,
-    /// Shape at the end, mm.
+    /// Shape after the last completed step, mm (as [`Snapshot::shape`]).
     pub shape: Vec<f64>,
+    /// The gap the last completed step's pressure is the contact solution of, mm (as
+    /// [`Snapshot::contact_shape`]).
+    #[serde(skip)]
+    pub contact_shape: Vec<f64>,
     /// Total contact solves.
     pub solves: usize,
     /// Steps whose iteration did not meet its tolerance.

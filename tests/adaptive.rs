@@ -232,3 +232,53 @@ fn adaptive_schedule_with_both_bodies_wearing_on_a_refined_mesh() {
         ),
     );
 }
+
+/// Archard's law keeps a balance that holds whatever the pressure is: with b = a = 1, body 1
+/// wearing alone and the plate carrying F, every half period removes the area
+/// β̃ · 2u₀ · F / t from the punch, so the worn area after H half periods is H times that.
+/// Every recorded shape of every scheme must meet it, at '+' steps (mid-cycle) as at '−'
+/// ones. (BDF2 once wrote its mid-cycle working shape, (4 g_n − g_v)/3 + (2/3) k ΔW⁺, whose
+/// area is k/3 half periods ahead: 11 % at step 3; review of 2026-11-24.)
+#[test]
+fn every_recorded_shape_holds_the_worn_area_of_its_half_periods() {
+    let text = wearfem::examples::example("punch-a")
+        .unwrap()
+        .replace("shape_zero_at = 1100.0", "");
+    let list: Vec<String> = (1..=200).map(|s| s.to_string()).collect();
+    let record = format!("record = [{}]", list.join(", "));
+    // F = 16.666 MPa on the 60 mm top edge, t = 10 mm (the problem's input).
+    let (force, thickness) = (16.666 * 60.0 * 10.0, 10.0);
+    for extra in [
+        "",
+        "adaptive = { method = \"bdf2\" }",
+        "adaptive = { method = \"step_doubling\" }",
+    ] {
+        let text = text.replace(RECORD, &format!("{record}\n{extra}"));
+        let problem = Problem::from_toml(&text, "punch-a, no shift").unwrap();
+        let wear = problem.spec.wear.as_ref().unwrap();
+        let per_half_period =
+            wear.body1.as_ref().unwrap().beta * 2.0 * wear.amplitude * force / thickness;
+        let run = driver::wear(&problem, Some(200), |_| {}).unwrap();
+        let points = &run.contact.points;
+        let h = &run.history;
+        assert!(
+            h.snapshots.len() > 100,
+            "{extra}: {} snapshots",
+            h.snapshots.len()
+        );
+        for s in &h.snapshots {
+            let area: f64 = (0..points.x.len())
+                .map(|i| points.weight[i] * (s.shape[i] - points.initial_gap[i]))
+                .sum();
+            let expected = s.half_period as f64 * per_half_period;
+            // Round-off of a 65-term weighted sum: 1e-12 relative (measured 1e-15).
+            assert!(
+                (area / expected - 1.0).abs() < 1e-12,
+                "{extra}: step {} ({}) after {} half periods: area {area:.6e}, expected {expected:.6e}",
+                s.step,
+                s.direction,
+                s.half_period
+            );
+        }
+    }
+}

@@ -37,7 +37,7 @@ fn monotonic_runs_write_no_minus_columns() {
         let text = std::fs::read_to_string(dir.join(name)).unwrap();
         text.lines().next().unwrap().to_string()
     };
-    assert_eq!(header("final.csv"), "x_mm,p_plus_MPa,shape_mm");
+    assert_eq!(header("final.csv"), "x_mm,p_plus_MPa,shape_mm,wear_mm");
     assert!(!header("history.csv").contains("delta_w"));
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
@@ -100,5 +100,79 @@ fn no_progress_bar_when_stderr_is_not_a_terminal() {
         .unwrap();
     assert_eq!(out.status.code(), Some(0));
     assert_eq!(String::from_utf8_lossy(&out.stderr), "");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `shape` is the gap's profile (initial gap plus wear), `wear` the wear alone. On a crowned
+/// punch (contact.initial_shape, R = 20 m about x = 1100) the corner x = 1070 never carries
+/// pressure in a short run: its wear is 0 and its shape the crown's height there,
+/// R − √(R² − 30²) = 22.5 µm. (Only the ParaView `wear` field said so before: the review of
+/// 2026-11-24 took `shape_mm` for the worn depth.)
+#[test]
+fn shape_is_the_initial_gap_plus_the_wear_and_wear_is_the_wear() {
+    let dir = std::env::temp_dir().join(format!("wearfem-crown-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // Without the shift to zero at x = 1100, which would move the wear by its depth there.
+    let text = wearfem::examples::example("punch-a")
+        .unwrap()
+        .replace("shape_zero_at = 1100.0", "");
+    let file = dir.join("crowned.toml");
+    std::fs::write(&file, text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .arg("run")
+        .arg(&file)
+        .args(["--steps", "4", "--quiet", "--out"])
+        .arg(&dir)
+        .args([
+            "--set",
+            "contact.initial_shape={radius=20000.0, center_x=1100.0}",
+        ])
+        .args([
+            "--set",
+            "wear.extrapolation=[{k=1}]",
+            "--set",
+            "wear.record=[3]",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(dir.join("final.csv")).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "x_mm,p_plus_MPa,p_minus_MPa,p_sum_MPa,shape_mm,wear_mm"
+    );
+    let first: Vec<f64> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    assert_eq!(first[0], 1070.0);
+    assert_eq!(first[3], 0.0, "the corner carries pressure");
+    let crown = 20000.0 - (20000.0f64 * 20000.0 - 30.0 * 30.0).sqrt();
+    // The crown enters the gap as given (plus the bodies' geometric gap, 0 on flat faces).
+    assert!(
+        (first[4] - crown).abs() < 1e-9,
+        "shape {} against crown {crown}",
+        first[4]
+    );
+    assert_eq!(first[5], 0.0, "wear where nothing was worn");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let wear = summary["final"]["wear"].as_array().unwrap();
+    let snapshot_wear = summary["snapshots"][0]["wear"].as_array().unwrap();
+    assert_eq!(wear[0].as_f64(), Some(0.0));
+    assert_eq!(snapshot_wear[0].as_f64(), Some(0.0));
+    // In the middle the punch wore: wear > 0, and shape = crown (0 at x = 1100) + wear.
+    let mid = wear.len() / 2;
+    let shape_mid = summary["final"]["shape"][mid].as_f64().unwrap();
+    assert!(wear[mid].as_f64().unwrap() > 0.0);
+    assert!((shape_mid - wear[mid].as_f64().unwrap()).abs() < 1e-12);
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -353,6 +353,17 @@ pub fn wear(
 }
 
 impl WearRun {
+    /// The wear in `shape` (a shape of this run, mm): `shape` minus the initial gap (the
+    /// bodies' geometric gap and `contact.initial_shape`), so 0 where nothing was worn
+    /// (after a shift by `wear.shape_zero_at`, relative to the worn depth there), mm.
+    pub fn wear_of(&self, shape: &[f64]) -> Vec<f64> {
+        shape
+            .iter()
+            .zip(&self.contact.points.initial_gap)
+            .map(|(g, g0)| g - g0)
+            .collect()
+    }
+
     /// Whether every step slid the same way (monotonic sliding, or a one-step run).
     pub fn is_monotonic(&self) -> bool {
         let h = &self.history.steps;
@@ -401,8 +412,9 @@ impl WearRun {
                 "p_minus": numbers(&h.p_minus),
                 "p_sum": numbers(&p_sum),
                 "shape": numbers(&h.shape),
+                "wear": numbers(&self.wear_of(&h.shape)),
             },
-            "snapshots": h.snapshots.iter().map(|s| json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "pressure": numbers(&s.pressure), "shape": numbers(&s.shape) })).collect::<Vec<_>>(),
+            "snapshots": h.snapshots.iter().map(|s| json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "pressure": numbers(&s.pressure), "shape": numbers(&s.shape), "wear": numbers(&self.wear_of(&s.shape)) })).collect::<Vec<_>>(),
             "edge_ends_in_contact": edge_ends_json(&self.edge_ends()),
             "coarse_partner_zones": coarse_zones_json(&self.contact.coarse_partner_zones(&[&h.p_plus, &h.p_minus])),
             "solves": h.solves,

@@ -74,8 +74,11 @@ pub struct Profiles<'a> {
     pub p_plus: &'a [f64],
     /// '−' half-cycle pressure, MPa (None for monotonic sliding).
     pub p_minus: Option<&'a [f64]>,
-    /// Worn shape, mm.
+    /// Shape: the gap's profile, initial gap plus wear, mm.
     pub shape: &'a [f64],
+    /// Wear: the shape minus the initial gap, mm (None for a steady state, whose shape is
+    /// defined up to a rigid motion and has no initial state).
+    pub wear: Option<&'a [f64]>,
 }
 
 impl Profiles<'_> {
@@ -99,15 +102,21 @@ impl Profiles<'_> {
                     row.extend([number(p_minus[i]), number(p_sum[i])]);
                 }
                 row.push(number(self.shape[i]));
+                if let Some(wear) = self.wear {
+                    row.push(number(wear[i]));
+                }
                 row
             })
             .collect();
-        let header: &[&str] = if two {
-            &["x_mm", "p_plus_MPa", "p_minus_MPa", "p_sum_MPa", "shape_mm"]
-        } else {
-            &["x_mm", "p_plus_MPa", "shape_mm"]
-        };
-        write_csv(dir, csv_name, header, &rows)?;
+        let mut header = vec!["x_mm", "p_plus_MPa"];
+        if two {
+            header.extend(["p_minus_MPa", "p_sum_MPa"]);
+        }
+        header.push("shape_mm");
+        if self.wear.is_some() {
+            header.push("wear_mm");
+        }
+        write_csv(dir, csv_name, &header, &rows)?;
         let profile = |v: &[f64], scale: f64| {
             self.x
                 .iter()
@@ -206,17 +215,20 @@ pub fn write_wear(
     let header_refs: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
     write_csv(dir, "history.csv", &header_refs, &rows)?;
     let x: Vec<f64> = run.contact.points.x.iter().map(|p| p[0]).collect();
+    let final_wear = run.wear_of(&h.shape);
     let profiles = Profiles {
         x: &x,
         p_plus: &h.p_plus,
         p_minus: (!monotonic).then_some(&h.p_minus[..]),
         shape: &h.shape,
+        wear: Some(&final_wear),
     };
     let name = crate::plot::problem_name(&problem.file);
     if h.steady_distance.is_some() {
         // Only a completed cycle has profiles worth writing.
         profiles.write(dir, "final.csv", &format!("{name}, last cycle"))?;
     }
+    let initial_gap = &run.contact.points.initial_gap;
     let rows: Vec<Vec<Value>> = h
         .snapshots
         .iter()
@@ -229,6 +241,7 @@ pub fn write_wear(
                 number(x[i]),
                 number(s.pressure[i]),
                 number(s.shape[i]),
+                number(s.shape[i] - initial_gap[i]),
             ]
         })
         .collect();
@@ -242,6 +255,7 @@ pub fn write_wear(
             "x_mm",
             "pressure_MPa",
             "shape_mm",
+            "wear_mm",
         ],
         &rows,
     )?;
@@ -333,6 +347,7 @@ pub fn write_steady(
         p_plus: &state.p_plus,
         p_minus,
         shape: &state.shape,
+        wear: None,
     }
     .write(
         dir,

@@ -122,6 +122,17 @@ impl Bdf2 {
         self.weight
     }
 
+    /// The shape after the first half cycle of the current cycle (factor `k`, that half
+    /// period's wear `increment`), as the other schemes report it: g_n + k ΔW⁺, written into
+    /// `out`. (The working shape (4 g_n − g_v)/3 + (2/3) k ΔW⁺ is only the BDF2 formula's
+    /// intermediate: its volume is k/3 half periods ahead.)
+    pub(super) fn mid_cycle_shape(&self, k: usize, increment: &[f64], out: &mut [f64]) {
+        let start = &self.shapes[0].1;
+        for ((o, g), w) in out.iter_mut().zip(start).zip(increment) {
+            *o = g + k as f64 * w;
+        }
+    }
+
     /// At the end of a cycle with factor `k` and pressures `plus` and `minus` (empty under
     /// monotonic sliding): the local error estimate (NaN until three cycles are known), the
     /// change max |p − p_previous| since the last cycle and the peak max p, all MPa.

@@ -45,6 +45,7 @@ impl WearIntegrator {
             p_plus: vec![0.0; n],
             p_minus: vec![0.0; n],
             shape: vec![],
+            contact_shape: vec![],
             solves: 0,
             unconverged_steps: 0,
             oscillating_steps: 0,
@@ -63,6 +64,9 @@ impl WearIntegrator {
             (method == Some(AdaptiveMethod::StepDoubling)).then(|| StepDoubling::new(&ws));
         let mut bdf2 = (method == Some(AdaptiveMethod::Bdf2)).then(|| Bdf2::new(monotonic));
         let mut half_periods = 0;
+        // The shape reported for the last completed step, and the gap its pressure solved.
+        let mut written = shape.clone();
+        let mut contact_shape = shape.clone();
         for step in 1..=self.spec.steps {
             // Odd steps slide in the first direction (contact.direction), even ones back.
             let first_half = monotonic || step % 2 == 1;
@@ -134,6 +138,9 @@ impl WearIntegrator {
             hist.oscillating_steps += usize::from(outcome.oscillating);
             half_periods += k;
             ws.last_shape.copy_from_slice(&shape);
+            for ((c, g), a) in contact_shape.iter_mut().zip(&shape).zip(&ws.ahead) {
+                *c = g + a;
+            }
             let (pressure, increment) = (&ws.solution.pressure, &ws.increment);
             let dissipation: f64 = (0..n)
                 .map(|i| pressure[i] * increment[i] * points.weight[i])
@@ -178,6 +185,15 @@ impl WearIntegrator {
                     steady_now = step > 4 && c.end_macro_step(local, change, peak, distance.wear);
                 }
             }
+            match bdf2.as_ref() {
+                // BDF2's working shape after a first half cycle is (4 g_n − g_v)/3 + (2/3) k ΔW⁺,
+                // which holds k/3 half periods too much wear; report g_n + k ΔW⁺ as the other
+                // schemes do (the wear of the k half periods of this direction so far).
+                Some(b) if first_half && !monotonic => {
+                    b.mid_cycle_shape(k, &ws.increment, &mut written)
+                }
+                _ => written.copy_from_slice(&shape),
+            }
             let record = StepRecord {
                 step,
                 half_period: half_periods,
@@ -198,7 +214,8 @@ impl WearIntegrator {
                     half_period: half_periods,
                     direction: direction.symbol(),
                     pressure: pressure.clone(),
-                    shape: shape.clone(),
+                    shape: written.clone(),
+                    contact_shape: contact_shape.clone(),
                 });
             }
             if steady_now {
@@ -206,7 +223,8 @@ impl WearIntegrator {
                 break;
             }
         }
-        hist.shape = shape;
+        hist.shape = written;
+        hist.contact_shape = contact_shape;
         hist
     }
 

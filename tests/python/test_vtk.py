@@ -110,8 +110,9 @@ def test_elastic_job_matches_the_probes(tmp_path):
 
 
 def test_run_job_has_every_recorded_step(tmp_path):
-    out, summary = run(tmp_path, "run", "punch-b40", "--steps", "60")
+    out, summary = run(tmp_path, "run", "punch-b40", "--steps", "103", "--set", "wear.record=[1,2,51,52,101,102]")
     sets = collection(out)
+    assert {s["direction"] for s in summary["snapshots"]} == {"+", "\u2212"}
     times = sorted({t for t, _, _ in sets})
     recorded = [s["half_period"] for s in summary["snapshots"]]
     last = summary["steps"][-1]["half_period"]
@@ -123,10 +124,13 @@ def test_run_job_has_every_recorded_step(tmp_path):
         line = contact_line(sets, float(snap["half_period"]))
         np.testing.assert_allclose(scalar(line.point_data["pressure_recorded"]), snap["pressure"], rtol=1e-12, atol=1e-9)
         np.testing.assert_allclose(scalar(line.point_data["shape"]), snap["shape"], rtol=1e-12, atol=1e-15)
-        # The state is solved again from the recorded shape; the run's pressure came from the
-        # last implicit iterate (tolerance wear.criterion 1 %), so they agree to about that.
+        # The state is solved again from the gap the run's pressure solved (after a '+' step
+        # the shape plus the look-ahead); the implicit step with b = 1 solves that contact
+        # problem exactly, so the two agree to the solver's round-off, 1e-6 of the peak
+        # leaving room for the ASCII round trip. (With the recorded shape alone, '+' steps
+        # were 0.2-0.4 % off: review of 2026-11-24.)
         peak = max(snap["pressure"])
-        assert np.max(np.abs(scalar(line.point_data["pressure"]) - snap["pressure"])) < 0.02 * peak
+        assert np.max(np.abs(scalar(line.point_data["pressure"]) - snap["pressure"])) < 1e-6 * peak
         assert np.all(scalar(line.point_data["gap"]) >= -1e-9)
 
 

@@ -44,8 +44,12 @@ pub struct ContactState {
     pub time: f64,
     /// Sliding direction of the state's half cycle.
     pub direction: Direction,
-    /// Gap g given to the contact solver (initial gap plus wear), mm.
+    /// Gap g given to the contact solver (initial gap plus wear; after a run's first half
+    /// cycle also the look-ahead, [`crate::wear::Snapshot::contact_shape`]), mm.
     pub gap: Vec<f64>,
+    /// The worn shape reported for this state (initial gap plus wear), mm; `wear` is this
+    /// minus the initial gap.
+    pub shape: Vec<f64>,
     /// Pressure recorded by the run at this state, MPa, if any.
     pub recorded_pressure: Option<Vec<f64>>,
 }
@@ -111,7 +115,7 @@ pub fn write_contact_states(
             })
             .collect();
         let wear: Vec<f64> = state
-            .gap
+            .shape
             .iter()
             .zip(&contact.points.initial_gap)
             .map(|(g, g0)| g - g0)
@@ -120,7 +124,7 @@ pub fn write_contact_states(
             ("pressure", &solution.pressure[..]),
             ("gap", &solution.gap[..]),
             ("wear", &wear[..]),
-            ("shape", &state.gap[..]),
+            ("shape", &state.shape[..]),
         ];
         if let Some(p) = &state.recorded_pressure {
             values.push(("pressure_recorded", &p[..]));
@@ -156,6 +160,7 @@ pub fn write_contact_job(dir: &Path, problem: &Problem) -> Result<(), VtkError> 
         time: 0.0,
         direction: direction(problem)?,
         gap: contact.points.initial_gap.clone(),
+        shape: contact.points.initial_gap.clone(),
         recorded_pressure: None,
     };
     write_contact_states(dir, problem, &[state])
@@ -176,6 +181,7 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &WearRun) -> Result<(), Vtk
         time: 0.0,
         direction: first,
         gap: run.contact.points.initial_gap.clone(),
+        shape: run.contact.points.initial_gap.clone(),
         recorded_pressure: None,
     }];
     let h = &run.history;
@@ -183,7 +189,8 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &WearRun) -> Result<(), Vtk
         states.push(ContactState {
             time: s.half_period as f64,
             direction: parse(s.direction),
-            gap: s.shape.clone(),
+            gap: s.contact_shape.clone(),
+            shape: s.shape.clone(),
             recorded_pressure: Some(s.pressure.clone()),
         });
     }
@@ -198,7 +205,8 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &WearRun) -> Result<(), Vtk
             states.push(ContactState {
                 time: last.half_period as f64,
                 direction: d,
-                gap: h.shape.clone(),
+                gap: h.contact_shape.clone(),
+                shape: h.shape.clone(),
                 recorded_pressure: Some(pressure.clone()),
             });
         }
@@ -224,6 +232,7 @@ pub fn write_steady(dir: &Path, problem: &Problem, state: &SteadyState) -> Resul
             time: k as f64,
             direction: d,
             gap: state.shape.clone(),
+            shape: state.shape.clone(),
             recorded_pressure: Some(p.clone()),
         })
         .collect();
