@@ -5,4 +5,5 @@ pub mod json;
 pub mod steady_check;
 pub mod sweep;
 pub mod validate;
+pub mod validity;
 pub mod warnings;

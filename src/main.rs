@@ -358,6 +358,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             for w in driver::model_warnings(&p, &result.contact) {
                 eprintln!("{w}");
             }
+            for w in wearfem::validity::run_warnings(&p, &result) {
+                eprintln!("{w}");
+            }
             for w in driver::zone_warnings(&p, &result.contact, &[&h.p_plus, &h.p_minus]) {
                 eprintln!("{w}");
             }
@@ -431,6 +434,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 out.display()
             );
             for w in driver::model_warnings(&p, &contact) {
+                eprintln!("{w}");
+            }
+            for w in wearfem::validity::steady_warnings(&p, &contact, &state) {
                 eprintln!("{w}");
             }
             for w in driver::zone_warnings(&p, &contact, &[&state.p_plus, &state.p_minus]) {

@@ -181,6 +181,10 @@ pub struct WearHistory {
     /// [`Snapshot::contact_shape`]).
     #[serde(skip)]
     pub contact_shape: Vec<f64>,
+    /// An upper bound of the depth worn off at any contact point, mm: the sum over the steps
+    /// of k times the deepest wear of the step's half period (exact for a uniform wear). It
+    /// counts the wear that `shape_zero_at` shifts out of `shape`.
+    pub worn_depth_bound: f64,
     /// Total contact solves.
     pub solves: usize,
     /// Steps whose iteration did not meet its tolerance.

@@ -46,6 +46,7 @@ impl WearIntegrator {
             p_minus: vec![0.0; n],
             shape: vec![],
             contact_shape: vec![],
+            worn_depth_bound: 0.0,
             solves: 0,
             unconverged_steps: 0,
             oscillating_steps: 0,
@@ -137,6 +138,7 @@ impl WearIntegrator {
             hist.unconverged_steps += usize::from(!outcome.converged);
             hist.oscillating_steps += usize::from(outcome.oscillating);
             half_periods += k;
+            hist.worn_depth_bound += k as f64 * ws.increment.iter().cloned().fold(0.0, f64::max);
             ws.last_shape.copy_from_slice(&shape);
             for ((c, g), a) in contact_shape.iter_mut().zip(&shape).zip(&ws.ahead) {
                 *c = g + a;

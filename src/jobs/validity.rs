@@ -1,0 +1,242 @@
+//! Whether a result lies inside the model's own assumptions: checks that no solver residual
+//! can see, because the equations were solved exactly and it is the equations that stop
+//! describing the problem.
+//!
+//! - *Quasi-static half periods.* The half-period scheme, and the steady states built on it,
+//!   hold the contact pressure at one value over a half period (paper §4: the wear of one
+//!   half period is small against the elastic response). With a large β̃, or b = 3 at a
+//!   high pressure, one half period's wear already moves the pressure: an independent
+//!   integration with 200 sub-steps per half period found the periodic state of punch-b40
+//!   with β̃ × 1000 8.5 % of the peak away from `wearfem steady`, which reported "Solved"
+//!   (review of 2026-11-24). [`half_period_pressure_change`] measures that directly: the
+//!   change of the pressure that one half period's wear causes, by two contact solves per
+//!   direction.
+//! - *Fixed geometry.* The bodies' meshes are never updated; wear enters only as a gap. A
+//!   worn depth that is not small against body 1 (a run of k = 10⁶ wore 240 mm off a 40 mm
+//!   punch) is outside the model ([`wear_depth_warning`]).
+//! - *Small displacements.* Linear elasticity: a plate displacement that is not small against
+//!   the body (E = 10⁻³ MPa moved the punch 690 m) is outside it ([`displacement_warning`]).
+
+use crate::complementarity::{ContactSolver, Direction, Status};
+use crate::contact::CondensedContact;
+use crate::problem::Problem;
+use crate::wear::{WearHistory, WearIntegrator};
+
+/// Largest change of the pressure over one half period, relative to the peak, that passes
+/// without a warning. Holding the pressure at its end-of-half-period value errs by about half
+/// the change; 2 % keeps that near the 1 % the steady check asks of a run.
+pub const HALF_PERIOD_CHANGE_LIMIT: f64 = 0.02;
+
+/// Largest worn depth, as a fraction of body 1's extent along the contact normal, and
+/// largest plate displacement (λ_F, and λ_M times the contact edge's length), as a fraction
+/// of the contact edge's length, that pass without a warning.
+pub const GEOMETRY_LIMIT: f64 = 0.1;
+
+/// The largest change of the contact pressure that the wear of one half period (one step
+/// under monotonic sliding) causes, relative to the peak pressure: for each direction d with
+/// pressure p_d, the pressure of direction d at `shape` and at `shape` + ΔW(p_d). None when
+/// a solve fails or no pressure is positive. `pressures` are (direction, pressure in MPa).
+pub fn half_period_pressure_change(
+    solver: &mut ContactSolver,
+    integrator: &WearIntegrator,
+    shape: &[f64],
+    pressures: &[(Direction, &[f64])],
+) -> Option<f64> {
+    let terms = integrator.half_period_wear();
+    let mut worn = shape.to_vec();
+    let mut change: f64 = 0.0;
+    for &(direction, pressure) in pressures {
+        for ((w, g), p) in worn.iter_mut().zip(shape).zip(pressure) {
+            *w = g + terms
+                .iter()
+                .map(|(c, b)| c * p.max(0.0).powf(*b))
+                .sum::<f64>();
+        }
+        let (before, info_before) = solver.solve(shape, direction);
+        let (after, info_after) = solver.solve(&worn, direction);
+        if info_before.status != Status::Solved || info_after.status != Status::Solved {
+            return None;
+        }
+        let peak = before.pressure.iter().cloned().fold(0.0, f64::max);
+        if peak <= 0.0 {
+            return None;
+        }
+        let largest = before
+            .pressure
+            .iter()
+            .zip(&after.pressure)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        change = change.max(largest / peak);
+    }
+    Some(change)
+}
+
+/// The warning for a [`half_period_pressure_change`] above [`HALF_PERIOD_CHANGE_LIMIT`].
+pub fn half_period_warning(problem: &Problem, change: Option<f64>) -> Option<String> {
+    let change = change?;
+    (change > HALF_PERIOD_CHANGE_LIMIT).then(|| format!(
+        "warning: {}: wear: one half period's wear changes the contact pressure by {:.1} % of its peak; the half-period scheme and the steady state hold the pressure constant over a half period, which is only right while that change is small (here the pressures can be off by about half of it). Lower β̃ or the pressure, or check with wear.substeps (docs/validation.md, What a result says about itself)",
+        problem.file,
+        100.0 * change
+    ))
+}
+
+/// Body 1's extent along the mean normal of the contact points, mm (None without contact).
+fn body1_depth(problem: &Problem, contact: &CondensedContact) -> Option<f64> {
+    let c = problem.spec.contact.as_ref()?;
+    let body = problem.body_index(&c.body).ok()?;
+    let mesh = problem.mesh(body).ok()?;
+    let normals = &contact.points.normal;
+    let n = normals
+        .iter()
+        .fold([0.0, 0.0], |s, v| [s[0] + v[0], s[1] + v[1]]);
+    let length = n[0].hypot(n[1]);
+    if length == 0.0 {
+        return None;
+    }
+    let along = |p: &[f64; 2]| (p[0] * n[0] + p[1] * n[1]) / length;
+    let (lo, hi) = mesh
+        .vertices
+        .iter()
+        .map(along)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    Some(hi - lo)
+}
+
+/// A warning when the run may have worn body 1 by more than [`GEOMETRY_LIMIT`] of its extent
+/// along the contact normal. The depth is bounded by the sum over the steps of k times the
+/// deepest wear of the step (exact for a uniform wear, as near the steady state).
+pub fn wear_depth_warning(
+    problem: &Problem,
+    contact: &CondensedContact,
+    history: &WearHistory,
+) -> Option<String> {
+    let depth = history.worn_depth_bound;
+    let extent = body1_depth(problem, contact)?;
+    (depth > GEOMETRY_LIMIT * extent).then(|| format!(
+        "warning: {}: the run wore up to {:.4e} mm off the contact ({} body 1's {:.4} mm along the contact normal); the bodies' geometry is never updated (wear enters as a gap only), so a worn depth that is not small against the body is outside the model. Shorten the run or check the wear coefficient",
+        problem.file,
+        depth,
+        share(depth / extent),
+        extent
+    ))
+}
+
+/// A warning when the first contact solve's plate displacement is not small against the
+/// contact edge (linear elasticity assumes small displacements): |λ_F|, or |λ_M| times the
+/// edge's length, above [`GEOMETRY_LIMIT`] of that length.
+pub fn displacement_warning(
+    problem: &Problem,
+    contact: &CondensedContact,
+    solver: &mut ContactSolver,
+    direction: Direction,
+) -> Option<String> {
+    let x = &contact.points.x;
+    let length: f64 = x
+        .windows(2)
+        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+        .sum();
+    let (solution, info) = solver.solve(&contact.points.initial_gap, direction);
+    if info.status != Status::Solved || length <= 0.0 {
+        return None;
+    }
+    let largest = contact
+        .rigid_names
+        .iter()
+        .zip(&solution.rigid)
+        .map(|(name, v)| {
+            if *name == "lambda_M" {
+                v.abs() * length
+            } else {
+                v.abs()
+            }
+        })
+        .fold(0.0, f64::max);
+    (largest > GEOMETRY_LIMIT * length).then(|| format!(
+        "warning: {}: the plate moves by {:.4e} mm under the load ({} the contact edge's {:.4} mm); linear elasticity assumes displacements small against the bodies, so these results are outside its range. Check the Young's moduli and the load (units: MPa and mm)",
+        problem.file,
+        largest,
+        share(largest / length),
+        length
+    ))
+}
+
+/// A contact solver and wear integrator for the checks, made as the jobs make them.
+fn tools(
+    problem: &Problem,
+    contact: &CondensedContact,
+) -> Option<(ContactSolver, WearIntegrator, Direction)> {
+    let spec = problem.spec.wear.as_ref()?;
+    let mut integrator = WearIntegrator::new(spec).ok()?;
+    let direction = crate::driver::direction(problem).ok()?;
+    integrator.first_direction = direction;
+    let solver = ContactSolver::new(contact, crate::driver::method(problem).ok()?);
+    Some((solver, integrator, direction))
+}
+
+/// The checks of this module for a finished `wearfem run`: its last cycle's pressures over a
+/// half period, its worn depth and the first solve's displacements.
+pub fn run_warnings(problem: &Problem, run: &crate::driver::WearRun) -> Vec<String> {
+    let Some((mut solver, integrator, first)) = tools(problem, &run.contact) else {
+        return Vec::new();
+    };
+    let h = &run.history;
+    let mut warnings = Vec::new();
+    if h.steady_distance.is_some() {
+        // p_plus is the '+' pressure, p_minus the '−' one, whichever came first; under
+        // monotonic sliding p_plus is the one direction's.
+        let pressures = if integrator.is_monotonic() {
+            vec![(first, &h.p_plus[..])]
+        } else {
+            vec![
+                (Direction::Plus, &h.p_plus[..]),
+                (Direction::Minus, &h.p_minus[..]),
+            ]
+        };
+        let change = half_period_pressure_change(&mut solver, &integrator, &h.shape, &pressures);
+        warnings.extend(half_period_warning(problem, change));
+    }
+    warnings.extend(wear_depth_warning(problem, &run.contact, h));
+    warnings.extend(displacement_warning(
+        problem,
+        &run.contact,
+        &mut solver,
+        first,
+    ));
+    warnings
+}
+
+/// The checks of this module for a steady state: its pressures over a half period and the
+/// first solve's displacements.
+pub fn steady_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    state: &crate::steady::SteadyState,
+) -> Vec<String> {
+    let Some((mut solver, integrator, first)) = tools(problem, contact) else {
+        return Vec::new();
+    };
+    let pressures = match state.sliding {
+        crate::steady::SteadySliding::Monotonic(d) => vec![(d, &state.p_plus[..])],
+        crate::steady::SteadySliding::Reciprocating => vec![
+            (Direction::Plus, &state.p_plus[..]),
+            (Direction::Minus, &state.p_minus[..]),
+        ],
+    };
+    let change = half_period_pressure_change(&mut solver, &integrator, &state.shape, &pressures);
+    let mut warnings: Vec<String> = half_period_warning(problem, change).into_iter().collect();
+    warnings.extend(displacement_warning(problem, contact, &mut solver, first));
+    warnings
+}
+
+/// "12 % of" for a ratio below 10, "3.2e5 times" above.
+fn share(ratio: f64) -> String {
+    if ratio < 10.0 {
+        format!("{:.0} % of", 100.0 * ratio)
+    } else {
+        format!("{ratio:.2e} times")
+    }
+}

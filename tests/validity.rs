@@ -1,0 +1,170 @@
+//! The checks of the model's own assumptions (src/jobs/validity.rs): results whose equations
+//! were solved exactly but which the equations no longer describe are reported.
+
+use wearfem::complementarity::{ContactSolver, Direction};
+use wearfem::driver;
+use wearfem::overrides::Override;
+use wearfem::problem::Problem;
+use wearfem::validity::{self, HALF_PERIOD_CHANGE_LIMIT};
+use wearfem::wear::WearIntegrator;
+
+fn problem(text: &str, sets: &[&str]) -> Problem {
+    let o: Vec<Override> = sets.iter().map(|s| Override::parse(s).unwrap()).collect();
+    Problem::with_overrides(text, "validity test", &o).unwrap()
+}
+
+fn builtin(name: &str, sets: &[&str]) -> Problem {
+    problem(wearfem::examples::example(name).unwrap(), sets)
+}
+
+/// The relative pressure change over one half period at the steady state of `p`.
+fn steady_change(p: &Problem) -> f64 {
+    let (state, contact, _) = driver::steady(p).unwrap();
+    let mut solver = ContactSolver::new(&contact, driver::method(p).unwrap());
+    let integrator = WearIntegrator::new(p.spec.wear.as_ref().unwrap()).unwrap();
+    let pressures = [
+        (Direction::Plus, &state.p_plus[..]),
+        (Direction::Minus, &state.p_minus[..]),
+    ];
+    validity::half_period_pressure_change(&mut solver, &integrator, &state.shape, &pressures)
+        .unwrap()
+}
+
+#[test]
+fn shipped_examples_are_inside_the_model() {
+    for name in ["punch-a", "punch-b40", "punch-b40-variant2", "brake", "pin"] {
+        let p = builtin(name, &[]);
+        let (state, contact, _) = driver::steady(&p).unwrap();
+        let w = validity::steady_warnings(&p, &contact, &state);
+        assert!(w.is_empty(), "{name} steady: {w:?}");
+        let run = driver::wear(&p, Some(200), |_| {}).unwrap();
+        let w = validity::run_warnings(&p, &run);
+        assert!(w.is_empty(), "{name} run: {w:?}");
+    }
+}
+
+/// For small wear per half period the change is a linear response to the wear, so it scales
+/// with β̃ (the steady state itself does not depend on β̃ for b = 1): ten times β̃, ten times
+/// the change, to the second-order term (measured 0.08006 % and 0.80058 %).
+#[test]
+fn the_change_over_a_half_period_is_linear_in_the_wear_coefficient() {
+    let small = steady_change(&builtin("punch-b40", &[]));
+    let ten = steady_change(&builtin(
+        "punch-b40",
+        &["wear.body1.beta=3.9269908169872414e-7"],
+    ));
+    assert!(small > 0.0 && small < HALF_PERIOD_CHANGE_LIMIT);
+    // 1 %: the quadratic term at a change of 0.8 % is ~0.8 % of it.
+    assert!((ten / small - 10.0).abs() < 0.1, "{small} -> {ten}");
+}
+
+/// Where the quasi-static half period fails, the steady state is wrong and says so. The
+/// reference is independent of the half-period scheme: explicit time stepping with 200
+/// sub-steps per half period (`wear.substeps`), the pressure updated within each half
+/// period, run (k = 1) until its cycle's wear is rigid. At β̃ × 1000 on punch-b40 (no shift
+/// to zero, so the wear accumulates) its periodic state is 8.5 % of the peak from
+/// `wearfem steady`; the change over a half period is 60 % there.
+#[test]
+fn a_steady_state_outside_the_quasi_static_half_period_is_reported() {
+    let text = wearfem::examples::example("punch-b40")
+        .unwrap()
+        .replace("shape_zero_at = 1100.0", "");
+    let beta = "wear.body1.beta=3.9269908169872414e-5";
+    let steady_problem = problem(&text, &[beta]);
+    let (state, contact, _) = driver::steady(&steady_problem).unwrap();
+    let warnings = validity::steady_warnings(&steady_problem, &contact, &state);
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    assert!(warnings[0].contains("one half period's wear changes the contact pressure"));
+    let reference = problem(
+        &text,
+        &[
+            beta,
+            "wear.extrapolation=[{k=1}]",
+            "wear.substeps=200",
+            "wear.record=[]",
+        ],
+    );
+    let run = driver::wear(&reference, Some(60), |_| {}).unwrap();
+    let h = &run.history;
+    // The reference has settled: its cycle's wear is rigid to 1e-6.
+    assert!(h.steady_distance.unwrap().wear < 1e-6);
+    let peak = state.p_plus.iter().cloned().fold(0.0, f64::max);
+    let off = state
+        .p_plus
+        .iter()
+        .zip(&h.p_plus)
+        .chain(state.p_minus.iter().zip(&h.p_minus))
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(off > 0.02 * peak, "the steady state is only {off} MPa off");
+}
+
+/// A worn depth beyond a tenth of body 1 (k = 10⁶: 300 steps wear ~500 mm off a 40 mm punch)
+/// and a plate displacement beyond a tenth of the contact edge (E = 10⁻³ MPa) are reported;
+/// the same run at the shipped values is not.
+#[test]
+fn wear_through_the_body_and_huge_displacements_are_reported() {
+    let base = r#"
+[analysis]
+kind = "plane_stress"
+thickness = 10.0
+p = 4
+[materials.steel]
+young = 2.0e5
+poisson = 0.30
+[[bodies]]
+name = "punch"
+[[bodies.blocks]]
+corners = [[-30.0, 0.0], [30.0, 0.0], [30.0, 40.0], [-30.0, 40.0]]
+u = 8
+v = 4
+material = "steel"
+names = { bottom = "contact", top = "top" }
+[[bodies.tractions]]
+edge = "top"
+normal = 10.0
+[[bodies]]
+name = "strip"
+[[bodies.blocks]]
+corners = [[-60.0, -40.0], [60.0, -40.0], [60.0, 0.0], [-60.0, 0.0]]
+u = 16
+v = 4
+material = "steel"
+names = { bottom = "base", top = "surface" }
+[[bodies.supports]]
+edge = "base"
+fix = ["x", "z"]
+[contact]
+body = "punch"
+edge = "contact"
+target_body = "strip"
+target_edge = "surface"
+friction = 0.25
+[plate]
+edge = "top"
+motion = "vertical_rotation"
+pin = [0.0, 40.0]
+[wear]
+body1 = { beta = 4e-8, a = 1.0, b = 1.0 }
+amplitude = 1.0
+omega = 10.0
+steps = 300
+shape_zero_at = 0.0
+"#;
+    let warnings = |sets: &[&str]| {
+        let p = problem(base, sets);
+        let run = driver::wear(&p, None, |_| {}).unwrap();
+        validity::run_warnings(&p, &run)
+    };
+    assert!(warnings(&[]).is_empty());
+    let deep = warnings(&["wear.extrapolation=[{k=1000000}]"]);
+    assert!(
+        deep.iter().any(|w| w.contains("the run wore up to")),
+        "{deep:?}"
+    );
+    let soft = warnings(&["materials.steel.young=1e-3"]);
+    assert!(
+        soft.iter().any(|w| w.contains("the plate moves by")),
+        "{soft:?}"
+    );
+}
