@@ -778,13 +778,19 @@ impl ContactSolver {
             .fold(0.0f64, |a, p| a.max(p.abs()))
             .max(1e-300);
         let mut comp = 0.0f64;
-        let a = &self.a[direction.index()];
+        let (base, compliance) = (
+            &self.base_diagonal[direction.index()],
+            &self.factors[0].compliance,
+        );
         for i in 0..n {
             let d = out.gap[i] + self.penalty_compliance[i] * out.force[i];
             // A gap as a pressure through the point's own compliance, the wear's included: a
-            // large wear compliance scales the round-off of d with it.
-            let to_pressure = 1.0
-                / (a[i * n + i].max(1.0 / self.gap_to_pressure[i] / self.area[i]) * self.area[i]);
+            // large wear compliance scales the round-off of d with it. A_s's diagonal is
+            // base + compliance, as `set_compliance` wrote it (read from here rather than
+            // from A_s, whose diagonal is one cache line per point).
+            let diagonal = base[i] + compliance[i];
+            let to_pressure =
+                1.0 / (diagonal.max(1.0 / self.gap_to_pressure[i] / self.area[i]) * self.area[i]);
             if bounded {
                 let b = self.bound[i];
                 comp = comp
