@@ -470,7 +470,13 @@ impl WearIntegrator {
         out.iter_mut().for_each(|w| *w = 0.0);
         for (law, s) in self.laws.iter().zip(sliding) {
             for (w, &pi) in out.iter_mut().zip(p) {
-                *w += scale * law.beta * pi.max(0.0).powf(law.b) * s;
+                // pow(x, 1) is x exactly: the linear law (every adaptive step) skips the call.
+                let pb = if law.b == 1.0 {
+                    pi.max(0.0)
+                } else {
+                    pi.max(0.0).powf(law.b)
+                };
+                *w += scale * law.beta * pb * s;
             }
         }
     }

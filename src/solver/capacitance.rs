@@ -40,6 +40,24 @@ pub struct Capacitance {
     lu: DenseLu,
     valid: bool,
     multipliers: Vec<f64>,
+    /// Per column z_i: max |z_i| over each block of unknowns (see [`Capacitance::solve`]).
+    column_maxima: Vec<Vec<f64>>,
+    /// Of the last solve, per block of unknowns: max |x₀| + Σ_i |μ_i| max |z_i| over the
+    /// block, which bounds every term of the corrected solution (see [`Capacitance::bound`]).
+    scale: Vec<f64>,
+    /// Of the last solve: x_i just before it was set to zero, per point out of contact.
+    leftover: Vec<f64>,
+}
+
+/// What the last corrected solve leaves for an a-posteriori bound on its residual
+/// ([`Capacitance::bound`]).
+pub struct CorrectionTerms<'a> {
+    /// Per block of unknowns, max |x₀| + Σ_i |μ_i| max |z_i| over the block.
+    pub scale: &'a [f64],
+    /// x_i just before it was set to zero, per point out of contact (in `inactive`'s order).
+    pub leftover: &'a [f64],
+    /// The number of columns added to x₀.
+    pub columns: usize,
 }
 
 impl Capacitance {
@@ -53,10 +71,14 @@ impl Capacitance {
     /// with x_i = 0 on `inactive`; `gap[i]` for i in `inactive` receives that point's gap
     /// (mm; the other entries are left alone). False if C is singular (the reduced system
     /// is), or the result is not finite.
+    ///
+    /// `blocks` are the first unknowns of the blocks (ascending, the first 0) over which
+    /// [`Capacitance::terms`] measures the solution's terms.
     pub fn solve(
         &mut self,
         full: &DenseLu,
         inactive: &[usize],
+        blocks: &[usize],
         x: &mut [f64],
         gap: &mut [f64],
         scratch: &mut [f64],
@@ -64,6 +86,7 @@ impl Capacitance {
         let size = full.dim();
         if self.columns.len() != size {
             self.columns = vec![None; size];
+            self.column_maxima = vec![Vec::new(); size];
         }
         // The missing columns in one blocked solve (a cold start may need many).
         let missing: Vec<usize> = inactive
@@ -78,7 +101,9 @@ impl Capacitance {
             }
             full.solve_columns_in_place(&mut block);
             for (j, &i) in missing.iter().enumerate() {
-                self.columns[i] = Some(block.col(j).iter().copied().collect());
+                let column: Vec<f64> = block.col(j).iter().copied().collect();
+                self.column_maxima[i] = block_maxima(&column, blocks);
+                self.columns[i] = Some(column);
             }
         }
         if !self.valid || self.inactive != inactive {
@@ -88,6 +113,7 @@ impl Capacitance {
             return false;
         }
         full.solve_in_place(x, &mut scratch[..size]);
+        self.scale = block_maxima(x, blocks);
         let k = inactive.len();
         self.multipliers.clear();
         self.multipliers.extend(inactive.iter().map(|&i| -x[i]));
@@ -99,12 +125,38 @@ impl Capacitance {
                 *xj += mu * zj;
             }
             gap[i] = mu;
+            for (s, z) in self.scale.iter_mut().zip(&self.column_maxima[i]) {
+                *s += mu.abs() * z;
+            }
         }
         // Round-off leaves x_i at about ε |x|: the set says it is zero.
+        self.leftover.clear();
         for &i in inactive {
+            self.leftover.push(x[i]);
             x[i] = 0.0;
         }
         self.multipliers.iter().all(|m| m.is_finite()) && x.iter().all(|v| v.is_finite())
+    }
+
+    /// What the last solve leaves for a bound on its residual. With x₀ = K⁻¹ b and the
+    /// columns z_i as computed (each with a backward error ΔK bounded as in
+    /// [`DenseLu::abs_factor_row_sums`]), the sum x = x₀ + Σ μ_i z_i with its rounding δ and
+    /// the leftovers t_i set to zero, the residual is exactly
+    ///
+    ///   K x − b = −ΔK₀ x₀ − Σ μ_i ΔK_i z_i + K δ − Σ_i t_i K e_i + Σ_i μ_i e_i,
+    ///
+    /// whatever μ the capacitance solve gave: in the rows of the active set every term but
+    /// the last is bounded by the factors' row sums times [`CorrectionTerms::scale`], by
+    /// |K|'s row sums times the same with γ_{k+1}, and by Σ |t_i| max |K e_i|; in the rows
+    /// out of contact the same bound holds for the residual's distance from μ_i (the gap
+    /// the solve reports). A correction gone wrong (K far worse conditioned than the
+    /// reduced system: large μ and z, cancellation) shows as a large scale or leftover.
+    pub fn terms(&self) -> CorrectionTerms<'_> {
+        CorrectionTerms {
+            scale: &self.scale,
+            leftover: &self.leftover,
+            columns: self.inactive.len(),
+        }
     }
 
     fn factorise(&mut self, inactive: &[usize]) {
@@ -119,6 +171,18 @@ impl Capacitance {
         self.inactive.clear();
         self.inactive.extend_from_slice(inactive);
     }
+}
+
+/// max |v_j| over each block of `v`, the blocks starting at `blocks` (ascending).
+pub fn block_maxima(v: &[f64], blocks: &[usize]) -> Vec<f64> {
+    blocks
+        .iter()
+        .enumerate()
+        .map(|(b, &start)| {
+            let end = blocks.get(b + 1).copied().unwrap_or(v.len());
+            v[start..end].iter().fold(0.0f64, |a, x| a.max(x.abs()))
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -168,7 +232,7 @@ mod tests {
             let direct = reduced_direct(&k, n, &keep, &b);
             let mut x = b.clone();
             let mut gap = vec![f64::NAN; n];
-            assert!(correction.solve(&full, &inactive, &mut x, &mut gap, &mut scratch));
+            assert!(correction.solve(&full, &inactive, &[0], &mut x, &mut gap, &mut scratch));
             for (r, &i) in keep.iter().enumerate() {
                 assert!((x[i] - direct[r]).abs() < 1e-12, "{inactive:?} x[{i}]");
             }
@@ -193,10 +257,10 @@ mod tests {
         let mut correction = Capacitance::default();
         let (mut gap, mut scratch) = (vec![0.0; 3], vec![0.0; 3]);
         let mut x = vec![1.0, 1.0, 1.0];
-        assert!(!correction.solve(&full, &[2], &mut x, &mut gap, &mut scratch));
+        assert!(!correction.solve(&full, &[2], &[0], &mut x, &mut gap, &mut scratch));
         // Without point 0 it leaves [[1, 1], [1, 1]] as well; without point 1, [[1, 0], [0, 1]].
         let mut x = vec![1.0, 1.0, 1.0];
-        assert!(correction.solve(&full, &[1], &mut x, &mut gap, &mut scratch));
+        assert!(correction.solve(&full, &[1], &[0], &mut x, &mut gap, &mut scratch));
         // Exact solution [1, 0, 1]; entries of order one: a few ulps.
         for (got, want) in x.iter().zip([1.0, 0.0, 1.0]) {
             assert!((got - want).abs() < 1e-14, "{x:?}");

@@ -15,7 +15,7 @@
 //! the compliance 1/(c_n w_i t) added to the diagonal: the penetration is then −p/c_n instead
 //! of zero.
 
-use crate::capacitance::Capacitance;
+use crate::capacitance::{block_maxima, Capacitance};
 use crate::contact::CondensedContact;
 use crate::dense::{dot, DenseLu};
 use crate::lemke::lemke;
@@ -51,7 +51,31 @@ impl Cached {
 enum Full {
     Unknown,
     Singular,
-    Ready(DenseLu),
+    Ready(Box<FullFactor>),
+}
+
+/// The all-active factorisation and what bounds the residual of a solve with it (see
+/// [`ContactSolver::solve_pressures_into`]).
+struct FullFactor {
+    lu: DenseLu,
+    /// Per block of unknowns (the N forces, then each rigid unknown): the row sums of
+    /// Pᵀ|L||U| ([`DenseLu::abs_factor_row_sums`]).
+    factor_rows: Vec<Vec<f64>>,
+    /// Per block, the row sums of |K|.
+    matrix_rows: Vec<Vec<f64>>,
+    /// max_i |K_ij| of each column j.
+    column_max: Vec<f64>,
+}
+
+/// How the last reduced system was solved.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Route {
+    /// With the all-active factorisation (every point in contact).
+    Full,
+    /// With its capacitance correction.
+    Corrected,
+    /// With the reduced system's own factorisation.
+    Reduced,
 }
 
 /// The factorisations that belong to one diagonal compliance (see
@@ -79,13 +103,14 @@ impl Factors {
 /// a schedule (the paper's has three, an adaptive one climbs a ladder of powers of two).
 const KEPT_COMPLIANCES: usize = 12;
 
-/// Build and factorise the reduced system [A_II R_I; E_I 0] of the points `index` into `lu`;
-/// false if it is singular.
+/// Build and factorise the reduced system [A_II R_I S; S E_I 0] of the points `index` into
+/// `lu` (S = diag `scale`, see [`ContactSolver::rigid_scale`]); false if it is singular.
 fn reduced_system(
     lu: &mut DenseLu,
     a: &[f64],
     e: &[f64],
     r: &[f64],
+    scale: &[f64],
     index: &[usize],
     (n, m): (usize, usize),
 ) -> bool {
@@ -100,11 +125,16 @@ fn reduced_system(
         for (col, &j) in index.iter().enumerate() {
             out[col] = a_row[j];
         }
-        out[na..].copy_from_slice(&r[i * m..(i + 1) * m]);
+        for (o, (v, s)) in out[na..]
+            .iter_mut()
+            .zip(r[i * m..(i + 1) * m].iter().zip(scale))
+        {
+            *o = v * s;
+        }
     }
     for k in 0..m {
         for (col, &j) in index.iter().enumerate() {
-            mat[(na + k) * size + col] = e[k * n + j];
+            mat[(na + k) * size + col] = e[k * n + j] * scale[k];
         }
     }
     lu.factor_in_place()
@@ -138,6 +168,20 @@ pub struct ContactSolver {
     /// Whether a solve may use the low-rank correction of the all-active factorisation
     /// (cleared for the retry of a solve whose corrected result missed the residuals).
     correct: bool,
+    /// How the last reduced system was solved.
+    route: Route,
+    /// The first unknown of each block over which the residual bound measures x: 0 (the
+    /// forces), then N, N + 1, … (each rigid unknown).
+    blocks: Vec<usize>,
+    /// A bound on each point's residual (see [`ContactSolver::solve_pressures_into`]).
+    bound: Vec<f64>,
+    /// Powers of two s_k that scale the rigid unknowns: the factorised systems are
+    /// [A R S; S E 0] [P; S⁻¹λ] = [−g; −S L]. R and E have entries of order one (and the
+    /// lever arms, mm), A of order 1e-5 mm/N: unscaled, partial pivoting takes E's rows as
+    /// pivots for the force columns and the factors' |L||U| exceeds |K| by orders of
+    /// magnitude, which spoils the residual bound. Scaled so that R S is of the order of
+    /// A's diagonal it does not; powers of two make the scaling exact.
+    rigid_scale: Vec<f64>,
     /// Most active-set iterations before Lemke's method takes over.
     pub max_iterations: usize,
 }
@@ -165,6 +209,19 @@ impl ContactSolver {
         let gap_to_pressure = (0..n)
             .map(|i| 1.0 / (contact.a_nn[i * n + i] * area[i]))
             .collect();
+        let r = contact.rigid_gap_matrix();
+        let diagonal = (0..n).map(|i| a[0][i * n + i].abs()).sum::<f64>() / n.max(1) as f64;
+        let rigid_scale = (0..m)
+            .map(|k| {
+                let largest = (0..n).fold(0.0f64, |acc, i| acc.max(r[i * m + k].abs()));
+                let ratio = diagonal / largest;
+                if ratio.is_finite() && ratio > 0.0 {
+                    2f64.powi(ratio.log2().round() as i32)
+                } else {
+                    1.0
+                }
+            })
+            .collect();
         ContactSolver {
             n,
             m,
@@ -175,7 +232,7 @@ impl ContactSolver {
                 contact.equilibrium_matrix(1.0),
                 contact.equilibrium_matrix(-1.0),
             ],
-            r: contact.rigid_gap_matrix(),
+            r,
             load: contact.plate_load.clone(),
             gap_to_pressure,
             penalty_compliance,
@@ -186,6 +243,10 @@ impl ContactSolver {
             index: Vec::with_capacity(n),
             inactive: Vec::with_capacity(n),
             correct: true,
+            route: Route::Reduced,
+            blocks: std::iter::once(0).chain(n..n + m).collect(),
+            bound: vec![0.0; n],
+            rigid_scale,
             max_iterations: 30 + n,
         }
     }
@@ -244,6 +305,62 @@ impl ContactSolver {
         direction: Direction,
         out: &mut ContactSolution,
     ) -> SolveInfo {
+        self.solve_checked(gap, direction, out, false)
+    }
+
+    /// [`ContactSolver::solve_into`] for a caller that needs the pressures and the rigid
+    /// motion, not the gaps of the points in contact: those are left at their exact value
+    /// (zero; the penetration −P_i/(c_n w_i t) with the penalty method), the others are
+    /// the solve's own. The same pressures, bit for bit; what it
+    /// spares is the gap pass, N² operations that stream the N × N gap matrix once, as
+    /// much as the solve itself.
+    ///
+    /// # Why the check is as safe
+    ///
+    /// The full pass serves the residual check: a solve is accepted only if
+    /// |min(p_i, d_i)| (d_i the gap as a pressure) is at round-off for every point. Here
+    /// d_i is not computed but bounded, rigorously, and the solve is accepted only if the
+    /// check passes for *every* d_i within the bound; otherwise the gaps are computed and
+    /// checked as by [`ContactSolver::solve_into`]. So a solve that the full check would
+    /// reject is never accepted (up to the full check's own rounding, which is of the
+    /// order of the bound's γ terms), and a solve the bound cannot vouch for costs what
+    /// it did before. The bound applies to the two routes that solve with the all-active
+    /// factorisation K:
+    ///
+    /// - *all points in contact*: the computed x̂ of K x = b satisfies (K + ΔK) x̂ = b with
+    ///   |ΔK| ≤ γ_3n Pᵀ|L||U| for the computed factors, whatever their growth (backward
+    ///   error analysis of LU with pivoting, [`DenseLu::abs_factor_row_sums`]), so
+    ///   |d_i| = |(K x̂ − b)_i| ≤ γ_3n Σ_b (Pᵀ|L||U| 1_b)_i max_{j in b} |x̂_j|, the blocks b
+    ///   being the forces and each rigid unknown (whose scales differ by orders of
+    ///   magnitude). A factorisation with large growth shows in the row sums.
+    /// - *the capacitance correction* (a few points out of contact): the residual is an
+    ///   exact sum of backward errors of the solves with K, the rounding of the sum
+    ///   x₀ + Σ μ_i z_i and the leftovers set to zero ([`Capacitance::terms`]); the points
+    ///   out of contact get the multipliers μ_i as gaps, within the same bound. This is the
+    ///   case the full pass was kept for: the correction loses accuracy when K is far worse
+    ///   conditioned than the reduced system, which shows as large μ_i, z_i or leftovers,
+    ///   so large a bound that the gaps are then computed and checked in full (and the
+    ///   solve redone without the correction if they miss, as before).
+    ///
+    /// The computed bound is doubled against the rounding of its own evaluation and the
+    /// second-order terms. The solves with a reduced system's own factorisation and by
+    /// Lemke's method compute every gap as before.
+    pub fn solve_pressures_into(
+        &mut self,
+        gap: &[f64],
+        direction: Direction,
+        out: &mut ContactSolution,
+    ) -> SolveInfo {
+        self.solve_checked(gap, direction, out, true)
+    }
+
+    fn solve_checked(
+        &mut self,
+        gap: &[f64],
+        direction: Direction,
+        out: &mut ContactSolution,
+        bounded: bool,
+    ) -> SolveInfo {
         let (n, m) = (self.n, self.m);
         out.pressure.resize(n, 0.0);
         out.force.resize(n, 0.0);
@@ -258,27 +375,38 @@ impl ContactSolver {
             complementarity: f64::INFINITY,
             equilibrium: f64::INFINITY,
         };
-        if self.method != Method::Lemke && self.active_set(gap, direction, out, &mut info) {
+        if self.method != Method::Lemke && self.active_set(gap, direction, out, &mut info, bounded)
+        {
             info.status = Status::Solved;
-            self.finish(direction, out, &mut info);
+            if bounded && self.route != Route::Reduced {
+                self.residual_bound(direction, out);
+                self.finish(direction, out, &mut info, true);
+                if info.status == Status::Solved {
+                    return info;
+                }
+                // The bound cannot vouch for the solve: check it in full.
+                info.status = Status::Solved;
+                self.compute_gap(gap, direction.index(), out);
+            }
+            self.finish(direction, out, &mut info, false);
             if info.status == Status::Solved {
                 return info;
             }
             // The low-rank correction can lose what the reduced system's own factorisation
             // keeps when K is far worse conditioned than the reduced system: try without.
             self.correct = false;
-            let direct = self.active_set(gap, direction, out, &mut info);
+            let direct = self.active_set(gap, direction, out, &mut info, false);
             self.correct = true;
             if direct {
                 info.status = Status::Solved;
-                self.finish(direction, out, &mut info);
+                self.finish(direction, out, &mut info, false);
                 if info.status == Status::Solved {
                     return info;
                 }
             }
         }
         self.lemke_solve(gap, direction, out, &mut info);
-        self.finish(direction, out, &mut info);
+        self.finish(direction, out, &mut info, false);
         info
     }
 
@@ -299,12 +427,96 @@ impl ContactSolver {
                 &self.a[dir],
                 &self.e[dir],
                 &self.r,
+                &self.rigid_scale,
                 &all,
                 (self.n, self.m),
             );
-            self.factors[0].full[dir] = if ok { Full::Ready(lu) } else { Full::Singular };
+            self.factors[0].full[dir] = if ok {
+                Full::Ready(Box::new(self.full_factor(lu, dir)))
+            } else {
+                Full::Singular
+            };
         }
         matches!(self.factors[0].full[dir], Full::Ready(_))
+    }
+
+    /// The all-active factorisation `lu` of direction `dir` with what bounds the residuals
+    /// of solves with it: O(N²) once per factorisation.
+    // Each row i fills entry i of several per-block arrays: an index reads best.
+    #[allow(clippy::needless_range_loop)]
+    fn full_factor(&self, lu: DenseLu, dir: usize) -> FullFactor {
+        let (n, m) = (self.n, self.m);
+        let size = n + m;
+        let blocks = &self.blocks;
+        let mut matrix_rows = vec![vec![0.0; size]; blocks.len()];
+        let mut column_max = vec![0.0f64; size];
+        // K = [A R; E 0]: rows of A and R, then rows of E.
+        for i in 0..n {
+            let row = &self.a[dir][i * n..(i + 1) * n];
+            matrix_rows[0][i] = row.iter().map(|v| v.abs()).sum();
+            for (c, v) in column_max.iter_mut().zip(row) {
+                *c = c.max(v.abs());
+            }
+            for k in 0..m {
+                let v = (self.r[i * m + k] * self.rigid_scale[k]).abs();
+                matrix_rows[1 + k][i] += v;
+                column_max[n + k] = column_max[n + k].max(v);
+            }
+        }
+        for k in 0..m {
+            let (row, s) = (&self.e[dir][k * n..(k + 1) * n], self.rigid_scale[k]);
+            matrix_rows[0][n + k] = row.iter().map(|v| (v * s).abs()).sum();
+            for (c, v) in column_max.iter_mut().zip(row) {
+                *c = c.max((v * s).abs());
+            }
+        }
+        FullFactor {
+            factor_rows: lu.abs_factor_row_sums(blocks),
+            matrix_rows,
+            column_max,
+            lu,
+        }
+    }
+
+    /// Bound the residual of each point's row after a solve by the all-active
+    /// factorisation or its correction ([`ContactSolver::solve_pressures_into`]) into
+    /// `self.bound`, and set the gaps of the points in contact to zero (the points out of
+    /// contact keep the correction's multipliers).
+    fn residual_bound(&mut self, direction: Direction, out: &mut ContactSolution) {
+        let (n, dir) = (self.n, direction.index());
+        let size = n + self.m;
+        let factors = &self.factors[0];
+        let Full::Ready(full) = &factors.full[dir] else {
+            unreachable!("solved by the all-active factorisation")
+        };
+        let eps = f64::EPSILON / 2.0;
+        let gamma = |k: usize| k as f64 * eps / (1.0 - k as f64 * eps);
+        let g_solve = gamma(3 * size);
+        let (scale, g_sum, leftover) = if self.route == Route::Full {
+            // The factorised system's unknowns: the forces and S⁻¹λ.
+            let mut x = out.force.clone();
+            x.extend(out.rigid.iter().zip(&self.rigid_scale).map(|(l, s)| l / s));
+            (block_maxima(&x, &self.blocks), 0.0, 0.0)
+        } else {
+            let terms = factors.correction[dir].terms();
+            let leftover: f64 = self
+                .inactive
+                .iter()
+                .zip(terms.leftover)
+                .map(|(&i, t)| t.abs() * full.column_max[i])
+                .sum();
+            (terms.scale.to_vec(), gamma(terms.columns + 1), leftover)
+        };
+        for i in 0..n {
+            let mut b = leftover;
+            for (blk, s) in scale.iter().enumerate() {
+                b += (g_solve * full.factor_rows[blk][i] + g_sum * full.matrix_rows[blk][i]) * s;
+            }
+            self.bound[i] = 2.0 * b;
+            if out.active[i] {
+                out.gap[i] = -self.penalty_compliance[i] * out.force[i];
+            }
+        }
     }
 
     fn active_set(
@@ -313,6 +525,7 @@ impl ContactSolver {
         direction: Direction,
         out: &mut ContactSolution,
         info: &mut SolveInfo,
+        bounded: bool,
     ) -> bool {
         let n = self.n;
         let dir = direction.index();
@@ -328,7 +541,9 @@ impl ContactSolver {
                 return false;
             }
             if !self.update_active(out) {
-                self.compute_gap(gap, dir, out);
+                if !(bounded && self.route != Route::Reduced) {
+                    self.compute_gap(gap, dir, out);
+                }
                 self.factors[0].cache[dir]
                     .active
                     .copy_from_slice(&out.active);
@@ -357,31 +572,45 @@ impl ContactSolver {
         if full_regular && (k == 0 || (self.correct && Capacitance::applies(k, n))) {
             self.rhs.clear();
             self.rhs.extend(gap.iter().map(|g| -g));
-            self.rhs.extend(self.load.iter().map(|l| -l));
+            self.rhs
+                .extend(self.load.iter().zip(&self.rigid_scale).map(|(l, s)| -l * s));
             let factors = &mut self.factors[0];
             let Full::Ready(full) = &factors.full[dir] else {
                 unreachable!("full_ready said regular")
             };
             let solved = if k == 0 {
-                full.solve_in_place(&mut self.rhs, &mut self.scratch);
+                full.lu.solve_in_place(&mut self.rhs, &mut self.scratch);
                 self.rhs.iter().all(|v| v.is_finite())
             } else {
                 factors.correction[dir].solve(
-                    full,
+                    &full.lu,
                     &self.inactive,
+                    &self.blocks,
                     &mut self.rhs,
                     &mut out.gap,
                     &mut self.scratch,
                 )
             };
+            self.route = if k == 0 {
+                Route::Full
+            } else {
+                Route::Corrected
+            };
             if solved {
                 out.force.copy_from_slice(&self.rhs[..n]);
-                out.rigid.copy_from_slice(&self.rhs[n..n + m]);
+                for (o, (v, s)) in out
+                    .rigid
+                    .iter_mut()
+                    .zip(self.rhs[n..].iter().zip(&self.rigid_scale))
+                {
+                    *o = v * s;
+                }
                 // The cached reduced factorisation no longer belongs to the set in use.
                 factors.cache[dir].valid = false;
                 return true;
             }
         }
+        self.route = Route::Reduced;
         let cached = &self.factors[0].cache[dir];
         if !cached.valid || cached.active != out.active {
             let active = std::mem::take(&mut out.active);
@@ -397,7 +626,8 @@ impl ContactSolver {
         self.index.extend((0..n).filter(|&i| out.active[i]));
         self.rhs.clear();
         self.rhs.extend(self.index.iter().map(|&i| -gap[i]));
-        self.rhs.extend(self.load.iter().map(|l| -l));
+        self.rhs
+            .extend(self.load.iter().zip(&self.rigid_scale).map(|(l, s)| -l * s));
         let size = self.index.len() + m;
         self.factors[0].cache[dir]
             .lu
@@ -409,7 +639,13 @@ impl ContactSolver {
         for (k, &i) in self.index.iter().enumerate() {
             out.force[i] = self.rhs[k];
         }
-        out.rigid.copy_from_slice(&self.rhs[self.index.len()..size]);
+        for (o, (v, s)) in out.rigid.iter_mut().zip(
+            self.rhs[self.index.len()..size]
+                .iter()
+                .zip(&self.rigid_scale),
+        ) {
+            *o = v * s;
+        }
         for &i in &self.inactive {
             out.gap[i] = self.gap_at(gap, dir, out, i);
         }
@@ -445,6 +681,7 @@ impl ContactSolver {
             &self.a[dir],
             &self.e[dir],
             &self.r,
+            &self.rigid_scale,
             &self.index,
             (self.n, self.m),
         );
@@ -520,7 +757,17 @@ impl ContactSolver {
         self.compute_gap(gap, dir, out);
     }
 
-    fn finish(&self, direction: Direction, out: &mut ContactSolution, info: &mut SolveInfo) {
+    /// The residual check. With `bounded`, each point's gap is known only to lie within
+    /// `self.bound` of `out.gap` ([`ContactSolver::solve_pressures_into`]): the
+    /// complementarity is then its largest value over that interval (|min(p, d)| is
+    /// monotone in d on either side of its zero, so an end of the interval).
+    fn finish(
+        &self,
+        direction: Direction,
+        out: &mut ContactSolution,
+        info: &mut SolveInfo,
+        bounded: bool,
+    ) {
         let (n, m) = (self.n, self.m);
         for i in 0..n {
             out.pressure[i] = out.force[i] / self.area[i];
@@ -531,14 +778,27 @@ impl ContactSolver {
             .fold(0.0f64, |a, p| a.max(p.abs()))
             .max(1e-300);
         let mut comp = 0.0f64;
-        let a = &self.a[direction.index()];
+        let (base, compliance) = (
+            &self.base_diagonal[direction.index()],
+            &self.factors[0].compliance,
+        );
         for i in 0..n {
             let d = out.gap[i] + self.penalty_compliance[i] * out.force[i];
             // A gap as a pressure through the point's own compliance, the wear's included: a
-            // large wear compliance scales the round-off of d with it.
-            let to_pressure = 1.0
-                / (a[i * n + i].max(1.0 / self.gap_to_pressure[i] / self.area[i]) * self.area[i]);
-            comp = comp.max(out.pressure[i].min(d * to_pressure).abs());
+            // large wear compliance scales the round-off of d with it. A_s's diagonal is
+            // base + compliance, as `set_compliance` wrote it (read from here rather than
+            // from A_s, whose diagonal is one cache line per point).
+            let diagonal = base[i] + compliance[i];
+            let to_pressure =
+                1.0 / (diagonal.max(1.0 / self.gap_to_pressure[i] / self.area[i]) * self.area[i]);
+            if bounded {
+                let b = self.bound[i];
+                comp = comp
+                    .max(out.pressure[i].min((d - b) * to_pressure).abs())
+                    .max(out.pressure[i].min((d + b) * to_pressure).abs());
+            } else {
+                comp = comp.max(out.pressure[i].min(d * to_pressure).abs());
+            }
         }
         info.complementarity = comp / peak;
         let e = &self.e[direction.index()];

@@ -319,7 +319,7 @@ impl WearIntegrator {
         // `new_increment` sums what the sub-steps really wore.
         ws.new_increment.iter_mut().for_each(|w| *w = 0.0);
         for sub in 0..m {
-            count.track(solver.solve_into(shape, direction, &mut ws.solution));
+            count.track(solver.solve_pressures_into(shape, direction, &mut ws.solution));
             let part: Vec<f64> = self
                 .laws
                 .iter()
@@ -343,7 +343,7 @@ impl WearIntegrator {
                 *total += w;
             }
         }
-        count.track(solver.solve_into(shape, direction, &mut ws.solution));
+        count.track(solver.solve_pressures_into(shape, direction, &mut ws.solution));
         for i in 0..shape.len() {
             ws.increment[i] = ws.new_increment[i] / k;
         }
@@ -391,7 +391,7 @@ impl WearIntegrator {
             for i in 0..n {
                 ws.trial[i] = shape[i] + ws.ahead[i];
             }
-            count.track(solver.solve_into(&ws.trial, direction, &mut ws.solution));
+            count.track(solver.solve_pressures_into(&ws.trial, direction, &mut ws.solution));
             self.apply_wear(shape, kf, ws);
             return StepOutcome {
                 iterations: 1,
@@ -416,7 +416,7 @@ impl WearIntegrator {
                 ws.linear_wear[i] = w - slope * p;
             }
             solver.set_compliance(&ws.compliance);
-            let info = solver.solve_into(&ws.trial, direction, &mut ws.solution);
+            let info = solver.solve_pressures_into(&ws.trial, direction, &mut ws.solution);
             count.track(info);
             if count.first_failure.is_some() {
                 break;
@@ -493,7 +493,7 @@ impl WearIntegrator {
     ) -> StepOutcome {
         let n = shape.len();
         let sliding = &ws.sliding;
-        count.track(solver.solve_into(shape, direction, &mut ws.solution));
+        count.track(solver.solve_pressures_into(shape, direction, &mut ws.solution));
         self.wear_increment(&ws.solution.pressure, sliding, k, &mut ws.increment);
         let (mut iterations, mut criterion, mut converged) = (0, 0.0, false);
         // The fixed-point iteration is a contraction only while k·∂W/∂p times the contact
@@ -506,7 +506,7 @@ impl WearIntegrator {
             for ((t, g), w) in ws.trial.iter_mut().zip(shape.iter()).zip(&ws.increment) {
                 *t = g + w;
             }
-            count.track(solver.solve_into(&ws.trial, direction, &mut ws.solution));
+            count.track(solver.solve_pressures_into(&ws.trial, direction, &mut ws.solution));
             self.wear_increment(&ws.solution.pressure, &ws.sliding, k, &mut ws.new_increment);
             criterion = self.criterion(shape, ws);
             if criterion <= self.spec.tolerance {
