@@ -36,9 +36,14 @@ fn every_step(text: &str, steps: usize, extra: &str) -> Problem {
 fn reach(history: &WearHistory, plus: &[f64], minus: &[f64], peak: f64) -> String {
     match history.half_periods_to_reach(plus, minus, peak, BOUND) {
         Some(hp) => {
-            let step = history.steps.iter().find(|s| s.half_period == hp).unwrap();
+            // The step whose cycle the crossing falls in (the half period is interpolated).
+            let step = history
+                .steps
+                .iter()
+                .find(|s| s.half_period as f64 >= hp)
+                .unwrap();
             let solves: usize = history.steps[..step.step].iter().map(|s| s.solves).sum();
-            format!("{hp} ({}, {solves})", step.step)
+            format!("{hp:.0} ({}, {solves})", step.step)
         }
         None => "not reached".into(),
     }

@@ -204,17 +204,21 @@ pub struct WearHistory {
 
 impl WearHistory {
     /// The half period at which the run first came within `bound` × `scale` (MPa) of the
-    /// pressures `p_plus` and `p_minus` of a reference state (MPa, one per contact point) and
-    /// stayed there for a whole cycle: the first '−' step whose pressures and those of the '+'
-    /// step before it are within the bound at every point. Reads the snapshots, so record
-    /// every step. None if it never gets there (or the sliding is monotonic).
+    /// pressures `p_plus` and `p_minus` of a reference state (MPa, one per contact point),
+    /// judged once per cycle: at the first '−' step whose pressures and those of the '+' step
+    /// before it are within the bound at every point. The crossing is placed between that
+    /// cycle and the one before by log-linear interpolation of the distance (the approach is
+    /// an exponential decay of the slowest modes), so that runs whose cycles span 2 or 64
+    /// half periods are measured alike rather than to the nearest cycle end. Reads the
+    /// snapshots, so record every step. None if it never gets there (or the sliding is
+    /// monotonic).
     pub fn half_periods_to_reach(
         &self,
         p_plus: &[f64],
         p_minus: &[f64],
         scale: f64,
         bound: f64,
-    ) -> Option<usize> {
+    ) -> Option<f64> {
         let worst = |a: &[f64], b: &[f64]| {
             a.iter()
                 .zip(b)
@@ -223,13 +227,23 @@ impl WearHistory {
                 / scale
         };
         let mut last_plus: Option<f64> = None;
+        // Half period and distance of the last cycle still outside the bound.
+        let mut outside: Option<(f64, f64)> = None;
         for s in &self.snapshots {
             if s.direction == "+" {
                 last_plus = Some(worst(&s.pressure, p_plus));
             } else if let Some(plus) = last_plus {
-                if plus.max(worst(&s.pressure, p_minus)) <= bound {
-                    return Some(s.half_period);
+                let distance = plus.max(worst(&s.pressure, p_minus));
+                let h = s.half_period as f64;
+                if distance <= bound {
+                    return Some(match outside {
+                        Some((h0, d0)) if distance > 0.0 => {
+                            h0 + (h - h0) * (d0 / bound).ln() / (d0 / distance).ln()
+                        }
+                        _ => h,
+                    });
                 }
+                outside = Some((h, distance));
             }
         }
         None

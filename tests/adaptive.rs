@@ -44,7 +44,7 @@ fn run(problem: &Problem) -> WearHistory {
 }
 
 /// Half periods until the run is within BOUND of the steady state.
-fn reach(history: &WearHistory, reference: &(Vec<f64>, Vec<f64>, f64)) -> usize {
+fn reach(history: &WearHistory, reference: &(Vec<f64>, Vec<f64>, f64)) -> f64 {
     let (plus, minus, peak) = reference;
     history
         .half_periods_to_reach(plus, minus, *peak, BOUND)
@@ -80,11 +80,11 @@ fn richardson_extrapolation_removes_the_lag_of_large_steps() {
     // k = 32 decays a transient of time constant τ ≈ 2800 half periods about k/(2τ) ≈ 0.6 %
     // (≈ 90 half periods) too slowly; Richardson's error is O((k/τ)²).
     assert!(
-        adaptive.abs_diff(process) <= 64,
+        (adaptive - process).abs() <= 64.0,
         "adaptive {adaptive}, process {process} half periods"
     );
     assert!(
-        first_order > process + 2 * 64,
+        first_order > process + 2.0 * 64.0,
         "first order {first_order}, process {process} half periods"
     );
 }
@@ -93,7 +93,9 @@ fn richardson_extrapolation_removes_the_lag_of_large_steps() {
 fn bdf2_has_no_first_order_lag() {
     // BDF2 with k up to 32 (cycles of 64 half periods), where backward Euler lags by more
     // than two cycles (previous test): its decay factor per step is e^(−z)(1 + O(z³)), so
-    // it gets there within the one cycle a run can resolve.
+    // it gets there with the process. The crossing is interpolated between cycles
+    // (half_periods_to_reach), so this is measured to better than a cycle: 16 half periods
+    // (0.1 % of the 14 654) allowed, 4 measured.
     let reference = steady(8);
     let process = reach(
         &run(&punch(8, 20_000, "extrapolation = [{ k = 1 }]")),
@@ -104,7 +106,7 @@ fn bdf2_has_no_first_order_lag() {
         &reference,
     );
     assert!(
-        bdf2.abs_diff(process) <= 64,
+        (bdf2 - process).abs() <= 16.0,
         "BDF2 {bdf2}, process {process} half periods"
     );
 }
