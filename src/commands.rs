@@ -100,7 +100,27 @@ pub(crate) fn sweep(
         out.join("sweep.csv").display()
     );
     if failed > 0 {
-        return Err(Failure::Compute(format!("{failed} of {} variants did not converge (see the status column of {}); all rows were written", variants.len(), out.join("sweep.csv").display())));
+        // Name each failed variant by its overrides, so that nobody has to find them in the
+        // table; their value cells hold nothing (empty in the CSV, null in the JSON).
+        let names: Vec<String> = variants
+            .iter()
+            .zip(&outcomes)
+            .filter(|(_, o)| !o.converged)
+            .map(|(v, o)| {
+                let sets: Vec<String> = v
+                    .overrides
+                    .iter()
+                    .map(|o| format!("{}={}", o.key, o.value_text()))
+                    .collect();
+                format!("{} ({})", sets.join(" "), o.status)
+            })
+            .collect();
+        return Err(Failure::Compute(format!(
+            "{failed} of {} variants did not converge: {}; their value cells are left empty in {} (null in sweep.json): only their status and time are written",
+            variants.len(),
+            names.join("; "),
+            out.join("sweep.csv").display()
+        )));
     }
     Ok(())
 }
