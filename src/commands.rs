@@ -185,6 +185,12 @@ pub(crate) fn steady_by(
     vtk: bool,
 ) -> Result<(), Failure> {
     let (outcome, contact, setup) = driver::steady_by(p, method, settings)?;
+    if outcome.state.status == wearfem::steady::SteadyStatus::NotSteady {
+        // The method ended, but its result fails the acceptance rule: not a steady state, and
+        // nothing of it is written.
+        let why = outcome.not_steady.as_deref().unwrap_or_default();
+        return Err(Failure::Compute(format!("the {} method gave no steady state ({} iterations): {why}; nothing was written (docs/validation.md, \"The four steady-state methods\")", method.name(), outcome.state.iterations)));
+    }
     if outcome.state.status != wearfem::steady::SteadyStatus::Solved {
         // Nothing from a failed solve is written as a result.
         return Err(Failure::Compute(format!("the {} method did not converge in {} iterations ({:?}, eq. 49 residual {:.3e}); nothing was written", method.name(), outcome.state.iterations, outcome.state.status, outcome.residual)));

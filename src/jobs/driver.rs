@@ -497,6 +497,7 @@ pub fn steady(
 
 /// The periodic steady state of `problem` by one of the paper's §6 methods or the exact one
 /// ([`crate::paper_steady`]), with the condensed contact problem and the set-up time (s).
+/// A §6 result that fails [`crate::paper_steady::accept`] has status `NotSteady`.
 pub fn steady_by(
     problem: &Problem,
     method: crate::paper_steady::SteadyMethod,
@@ -555,6 +556,12 @@ pub fn steady_by(
         }) {
             outcome.distance_from_exact =
                 super::steady_check::pressure_distance(&outcome.state, exact);
+        }
+        // A result that fails the acceptance rule is not a steady state: its status says so,
+        // and callers write none of its values.
+        outcome.not_steady = crate::paper_steady::accept(&outcome, settings.tolerance);
+        if outcome.not_steady.is_some() {
+            outcome.state.status = crate::steady::SteadyStatus::NotSteady;
         }
     }
     Ok((outcome, contact, setup))
