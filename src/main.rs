@@ -284,11 +284,21 @@ fn run(cli: Cli) -> Result<(), Failure> {
             if let Some(w) = driver::penalty_warning(&p, &contact) {
                 eprintln!("{w}");
             }
-            for w in driver::zone_warnings(&p, &contact, &[&solution.pressure]) {
-                eprintln!("{w}");
+            // The zone diagnostics describe a solution: a failed solve gets none (its
+            // pressures are not one), only what its failure says about the loads.
+            let unbalanced = (!solved)
+                .then(|| driver::pressure_at_one_end(&solution.pressure))
+                .flatten();
+            if solved {
+                for w in driver::zone_warnings(&p, &contact, &[&solution.pressure]) {
+                    eprintln!("{w}");
+                }
             }
             if solved {
                 println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
+            }
+            if let (false, Some(end)) = (solved, unbalanced) {
+                return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}): the loads cannot be balanced on this contact edge. The solver ended with all the pressure on the {end} contact point, the edge's corner: the moment of the load and of friction (μ·l_z with a pin) needs the pressure resultant beyond the edge, so the punch would tip. Refining the mesh does not help; lower contact.friction, move plate.pin closer to the contact, or centre the load. summary.json holds the status and residuals, and no values of the failed solve were written", info.complementarity, info.equilibrium)));
             }
             if info.status == wearfem::complementarity::Status::Failed {
                 return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}); summary.json holds the status and residuals, and no values of the failed solve were written. A solution may not exist: with a plate that rotates about a pin, friction moves the pressure resultant by μ·l_z, and if that leaves the contact the plate tips", info.complementarity, info.equilibrium)));

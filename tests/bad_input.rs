@@ -306,6 +306,36 @@ fn a_failed_contact_solve_writes_no_values() {
     std::fs::remove_dir_all(&out).unwrap();
 }
 
+/// Red-team review 4, F6a: loads that cannot be balanced on the contact edge (μ = 2 on the
+/// small pinned punch: the friction moment needs the pressure centroid 80 mm outside a 60 mm
+/// punch) leave all the failed solve's pressure on one corner point. The message says that the
+/// loads cannot be balanced (the punch tips), not "only 1 contact point carries pressure …
+/// refine", which cannot help; no zone diagnostics are drawn from the failed solve.
+#[test]
+fn loads_that_cannot_be_balanced_are_named_not_blamed_on_the_mesh() {
+    let problem = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/small-punch.toml"
+    );
+    for set in ["contact.friction=2", "plate.pin=[0, 100000]"] {
+        let out = std::env::temp_dir().join(format!("wearfem-tipping-{}", std::process::id()));
+        let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args(["contact", problem, "--set", set, "--out"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert_eq!(result.status.code(), Some(1), "{set}");
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert!(
+            stderr.contains("the loads cannot be balanced on this contact edge")
+                && stderr.contains("tip"),
+            "{set}: {stderr}"
+        );
+        assert!(!stderr.contains("Refine body 1"), "{set}: {stderr}");
+        let _ = std::fs::remove_dir_all(&out);
+    }
+}
+
 /// What the model leaves out is said, not silent: a stroke far beyond the contact edge (fixed
 /// contact pairs) and body 2 wearing under monotonic sliding each give a warning, and the
 /// shipped punch-b40 (stroke 5 % of its edge) gives none.

@@ -262,6 +262,28 @@ pub fn contact(
     Ok((summary, contact, solution, info))
 }
 
+/// The edge end at which a failed contact solve left all its pressure, if it did: "first" or
+/// "last" contact point. That is the signature of loads that cannot be balanced on this
+/// contact edge (the friction moment about the pin, or an eccentric load, needs the pressure
+/// resultant beyond the edge: the punch would tip); the solver ends with every force on one
+/// corner point and a complementarity residual it cannot reduce. Refining the mesh does not
+/// help then, so the "too few contact points" advice of [`zone_warnings`] would mislead.
+/// Only used to explain a failure: the pressures of a failed solve are never a result.
+pub fn pressure_at_one_end(pressure: &[f64]) -> Option<&'static str> {
+    let n = pressure.len();
+    let peak = pressure.iter().cloned().fold(0.0, f64::max);
+    if n < 2 || !(peak > 0.0) {
+        return None;
+    }
+    // Pressures below 1e-9 of the peak are round-off of the active-set solve.
+    let carrying: Vec<usize> = (0..n).filter(|&i| pressure[i] > 1e-9 * peak).collect();
+    match carrying[..] {
+        [0] => Some("first"),
+        [i] if i == n - 1 => Some("last"),
+        _ => None,
+    }
+}
+
 /// A finished wear run with its set-up.
 pub struct WearRun {
     /// The condensed contact problem.
