@@ -90,23 +90,25 @@ enum Command {
         /// (§6.2), penalty (§6.3).
         #[arg(long, default_value = "exact")]
         method: String,
-        /// Reading of eq. 39: mean (what the paper's printed ordinates are) or sum (as printed).
-        #[arg(long, default_value = "mean")]
-        reading: String,
-        /// Spline sensitivities: fd (finite differences, eq. 46) or exact.
-        #[arg(long, default_value = "fd")]
-        sensitivities: String,
-        /// Penalty parameter c_n of the penalty method, MPa/mm (default: the contact stiffness).
+        /// averaged, spline, penalty: reading of eq. 39, mean (default; what the paper's
+        /// printed ordinates are) or sum (as printed).
+        #[arg(long)]
+        reading: Option<String>,
+        /// spline: sensitivities, fd (default; finite differences, eq. 46) or exact.
+        #[arg(long)]
+        sensitivities: Option<String>,
+        /// penalty: penalty parameter c_n, MPa/mm (default: the contact stiffness).
         #[arg(long)]
         penalty: Option<f64>,
-        /// Spline method: bisect every interval between the paper's 17 spline points this many
-        /// times (0: the paper's 17 points, 3-4 % off the exact state at the ends of the
-        /// both-halves contact zone; 1: 33 points, within 0.05 %; docs/validation.md).
-        #[arg(long, default_value_t = 0)]
-        spline_refinement: u32,
-        /// Convergence tolerance of the spline and penalty methods on eq. 49 (relative).
-        #[arg(long, default_value_t = 1e-3)]
-        tolerance: f64,
+        /// spline: bisect every interval between the paper's 17 spline points this many times
+        /// (default 0: the paper's 17 points, 3-4 % off the exact state at the ends of the
+        /// both-halves contact zone; 1: 33 points, within 0.05 %; docs/validation.md); at most
+        /// as many spline points as contact points.
+        #[arg(long)]
+        spline_refinement: Option<u32>,
+        /// spline, penalty: convergence tolerance on eq. 49 (relative; default 1e-3).
+        #[arg(long)]
+        tolerance: Option<f64>,
         /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
         #[arg(long)]
         vtk: bool,
@@ -323,8 +325,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
             if !result.records_past_end.is_empty() {
                 eprintln!(
-                    "note: wear.record asks for steps {:?}, past the last step of this run (--steps); they are listed as records_past_end in summary.json",
-                    result.records_past_end
+                    "note: wear.record asks for steps {:?}, past the last step of this run ({}); they are not recorded and are listed as records_past_end in summary.json",
+                    result.records_past_end,
+                    match &result.history.stopped {
+                        Some((step, reason)) => format!("it stopped at step {step}: {reason}"),
+                        None => "--steps".to_string(),
+                    }
                 );
             }
             let h = &result.history;
@@ -396,17 +402,24 @@ fn run(cli: Cli) -> Result<(), Failure> {
             spline_refinement,
             tolerance,
         } => {
+            let method = SteadyMethod::parse(&method).ok_or_else(|| {
+                Failure::Input(format!(
+                    "--method: must be exact, averaged, spline or penalty, got \"{method}\""
+                ))
+            })?;
+            // An option the chosen method does not use is an error, not ignored.
+            let options = commands::MethodOptions {
+                reading,
+                sensitivities,
+                penalty,
+                spline_refinement,
+                tolerance,
+            };
+            let settings = method_settings(method, &options)?;
             let p = load(&problem, &set)?;
             // The paper's §6 methods; `exact` keeps the direct path below (any b, either
             // sliding, ParaView output), whose summary the Python layer reproduces.
-            if method != "exact" {
-                let mut settings = method_settings(&reading, &sensitivities, penalty, tolerance)?;
-                settings.spline_refinement = spline_refinement;
-                let method = SteadyMethod::parse(&method).ok_or_else(|| {
-                    Failure::Input(format!(
-                        "--method: must be exact, averaged, spline or penalty, got \"{method}\""
-                    ))
-                })?;
+            if method != SteadyMethod::Exact {
                 return steady_by(&p, method, settings, &out, wants_vtk(vtk, &p));
             }
             let (state, contact, seconds) = driver::steady(&p)?;

@@ -296,7 +296,9 @@ pub struct WearRun {
     pub setup_seconds: f64,
     /// Seconds spent integrating.
     pub run_seconds: f64,
-    /// Steps of `wear.record` past the end of a run shortened by the `steps` argument.
+    /// Steps of `wear.record` that were not recorded because the run ended before them: past
+    /// the end of a run shortened by the `steps` argument, or after the last completed step of
+    /// a run that stopped early (an adaptive run at the steady state, a failed solve).
     pub records_past_end: Vec<usize>,
     /// Sliding distance of one half period (monotonic: of one step unit), mm.
     pub sliding_per_half_period: f64,
@@ -361,6 +363,15 @@ pub fn wear(
         on_step,
     );
     let run_seconds = start.elapsed().as_secs_f64();
+    if history.stopped.is_some() {
+        // A run that ended before its last step (an adaptive run at the steady state, or a
+        // failed solve) did not reach the snapshots asked for after its last completed step:
+        // listed like those past a shortened run's end, not dropped in silence.
+        let last = history.steps.last().map_or(0, |s| s.step);
+        records_past_end.extend(spec.record.iter().copied().filter(|&r| r > last));
+        records_past_end.sort_unstable();
+        records_past_end.dedup();
+    }
     let steady_check = super::steady_check::check(&contact, &integrator, &history);
     Ok(WearRun {
         contact,
@@ -543,6 +554,23 @@ pub fn steady_by(
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
     let setup = start.elapsed().as_secs_f64();
+    let most = crate::spline_method::max_refinement(contact.len());
+    if method == crate::paper_steady::SteadyMethod::Spline && settings.spline_refinement > most {
+        // The library caps it (a spline with more points than the contact has cannot be
+        // determined); asked for explicitly, the cap would go unnoticed.
+        return Err(ProblemError {
+            file: problem.file.clone(),
+            key: "--spline-refinement".into(),
+            message: format!(
+                "{} asks for {} spline points, more than the {} contact points determine; the largest allowed value is {most} ({} spline points)",
+                settings.spline_refinement,
+                (16u64 << settings.spline_refinement.min(40)) + 1,
+                contact.len(),
+                (16usize << most) + 1
+            ),
+        }
+        .into());
+    }
     let outcome = crate::paper_steady::solve_steady(
         &contact,
         &integrator.half_period_wear(),

@@ -81,7 +81,8 @@ pub struct MethodSettings {
     /// Spline method: how many times every interval between the paper's 17 spline points is
     /// bisected (default 0, the paper's 17 points; 1 gives 33, 2 gives 65), for the study of
     /// the spline's resolution. Capped so that the spline has no more points than the contact
-    /// has contact points (2 with the examples' 65 points).
+    /// has contact points ([`crate::spline_method::max_refinement`]: 2 with the examples' 65
+    /// points); `wearfem steady` refuses a larger value instead of capping it.
     pub spline_refinement: u32,
 }
 
