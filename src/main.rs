@@ -20,7 +20,7 @@ use commands::{method_settings, steady_by, sweep, validate};
 #[derive(Parser)]
 #[command(
     name = "wearfem",
-    version,
+    version = wearfem::VERSION,
     about = "Steady sliding wear by p-version finite elements (mm, N, MPa, s)"
 )]
 struct Cli {

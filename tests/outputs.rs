@@ -102,3 +102,58 @@ fn no_progress_bar_when_stderr_is_not_a_terminal() {
     assert_eq!(String::from_utf8_lossy(&out.stderr), "");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn every_summary_says_which_build_wrote_it() {
+    // Red-team review 4, N1: a stale Python wheel gave other results than the binary, and
+    // nothing told them apart. Every summary.json (and sweep.json) now carries
+    // `wearfem_version`, the crate version plus the git commit when built from a checkout,
+    // the same string as `wearfem --version`.
+    let problem = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/small-punch.toml"
+    );
+    let version = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .arg("--version")
+        .output()
+        .unwrap();
+    let version = String::from_utf8_lossy(&version.stdout).trim().to_string();
+    assert_eq!(version, format!("wearfem {}", wearfem::VERSION));
+    assert!(wearfem::VERSION.starts_with(env!("CARGO_PKG_VERSION")));
+    // The tests run from a git checkout (CI clones the repository): the commit is there.
+    if std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.git")).exists() {
+        assert!(wearfem::VERSION.contains("+g"), "{}", wearfem::VERSION);
+    }
+    let dir = std::env::temp_dir().join(format!("wearfem-version-{}", std::process::id()));
+    for (args, file) in [
+        (&["elastic", "lame"][..], "summary.json"),
+        (&["contact", problem][..], "summary.json"),
+        (&["run", problem, "--steps", "2"][..], "summary.json"),
+        (&["steady", problem][..], "summary.json"),
+        (
+            &["steady", problem, "--method", "penalty"][..],
+            "summary.json",
+        ),
+        (
+            &["sweep", problem, "--set", "contact.friction=[0.1]"][..],
+            "sweep.json",
+        ),
+    ] {
+        let _ = std::fs::remove_dir_all(&dir);
+        let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args(args)
+            .args(["--quiet", "--out"])
+            .arg(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join(file)).unwrap()).unwrap();
+        assert_eq!(v["wearfem_version"], wearfem::VERSION, "{args:?}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -303,6 +303,8 @@ impl PyProblem {
 #[pymodule]
 fn _wearfem(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyProblem>()?;
-    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    // The library's build stamp (crate version + git commit), as summary.json's
+    // `wearfem_version`: a wheel out of step with the command line shows it.
+    m.add("__version__", wearfem::VERSION)?;
     Ok(())
 }

@@ -167,3 +167,16 @@ def test_non_converged_steady_is_a_result_not_an_exception(punch, cli):
     assert not s.converged and s.status != "Solved"
     proc, out = cli("steady", "punch-b40", "--set", "contact.friction=0.4", "--set", "plate.pin=[1100, 160]")
     assert proc.returncode == 1 and "did not converge" in proc.stderr
+
+
+def test_version_stamp_matches_the_command_line(punch, wearfem_bin):
+    """Red-team review 4, N1: a stale wheel went unnoticed. ``wearfem.__version__`` is the
+    library's build stamp (crate version + git commit), the ``wearfem_version`` of every
+    summary and what ``wearfem --version`` prints for a binary built from the same source."""
+    import subprocess
+
+    v = wearfem.__version__
+    assert v.startswith("0.") and v == punch.contact().summary["wearfem_version"]
+    assert punch.steady().summary["wearfem_version"] == v
+    cli = subprocess.run([str(wearfem_bin), "--version"], capture_output=True, text=True).stdout.split()
+    assert cli == ["wearfem", v]

@@ -63,6 +63,7 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
     }
     Ok(json!({
         "title": problem.spec.title,
+        "wearfem_version": crate::VERSION,
         "dofs": dofs,
         "condensed_dofs": condensed,
         "strain_energy": number(energy),
@@ -233,6 +234,7 @@ pub fn contact(
         .collect();
     let summary = json!({
         "title": problem.spec.title,
+        "wearfem_version": crate::VERSION,
         "points": contact.len(),
         "x": contact.points.x.iter().map(|p| number(p[0])).collect::<Vec<_>>(),
         "z": contact.points.x.iter().map(|p| number(p[1])).collect::<Vec<_>>(),
@@ -426,6 +428,7 @@ impl WearRun {
         let half_periods = h.steps.last().map_or(0, |s| s.half_period);
         let mut summary = json!({
             "title": problem.spec.title,
+            "wearfem_version": crate::VERSION,
             "points": self.contact.len(),
             "steps": steps,
             "final": {

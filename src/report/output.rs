@@ -288,6 +288,7 @@ pub fn steady_summary(
     };
     let summary = json!({
         "title": problem.spec.title,
+        "wearfem_version": crate::VERSION,
         "status": format!("{:?}", state.status),
         "sliding": match state.sliding {
             crate::steady::SteadySliding::Reciprocating => "reciprocating".to_string(),

@@ -149,6 +149,7 @@ pub fn summary(
         .collect();
     json!({
         "title": title,
+        "wearfem_version": crate::VERSION,
         "job": match job { Job::Steady => "steady", Job::Run => "run" },
         "threads": jobs,
         "variants": rows,
