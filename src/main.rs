@@ -364,7 +364,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
                         SteadyCheck::Unavailable(why) => format!("no steady state to compare with ({why})"),
                         SteadyCheck::NoCycle => String::new(),
                     };
-                    println!("last cycle: {against}; wear per period rigid to {:.2e} (relative), δw = {:.3e} mm: {verdict}", d.wear, d.delta_w);
+                    // δw compares the two half cycles of a period: none under monotonic sliding.
+                    let delta_w = if result.is_monotonic() {
+                        String::new()
+                    } else {
+                        format!(", δw = {:.3e} mm", d.delta_w)
+                    };
+                    println!("last cycle: {against}; wear per period rigid to {:.2e} (relative){delta_w}: {verdict}", d.wear);
                 }
                 None => println!("no full cycle completed: no final profiles written"),
             }

@@ -164,14 +164,17 @@ class RunResult(_Result):
     """Wear time integration (``wearfem run``).
 
     ``history``: a dict of arrays, one entry per step, ready for ``pandas.DataFrame``: step,
-    half_period, direction ("+"/"−"), k, iterations, criterion (%), dissipation (N·mm),
+    half_period, direction ("+"/"−"), k, iterations, solves (contact solves of the step),
+    criterion (%), dissipation (N·mm),
     delta_w (mm, reciprocating only) and ``p_<probe>`` (MPa). Final profiles (None when the
     run did not complete a cycle): ``x`` (mm), ``p_plus``, ``p_minus``, ``p_sum`` (MPa),
     ``shape`` (mm). Scalars: ``status`` ("solved", or what went wrong), ``converged``,
     ``steady_reached`` (the last cycle's pressures within 1 % of the peak of the steady
     state of the same problem, or, where none exists, its wear rigid to 1 %),
     ``steady_distance`` (a dict: ``pressure``, that distance relative to the peak, None
-    without a steady state; ``wear``, ``delta_w`` mm, ``summed_pressure``), ``solves``,
+    without a steady state; ``wear``, ``delta_w`` mm, ``summed_pressure``; ``delta_w`` is None
+    for monotonic sliding and ``summed_pressure`` None, with ``summed_pressure_note`` saying
+    why, when fewer than two points carry pressure in both half cycles), ``solves``,
     ``failed_solves``, ``unconverged_steps``, ``oscillating_steps`` (``converged`` is False
     when any of these three is non-zero or the run stopped early for another reason than the
     steady state; the profiles and steps are then only those of the completed steps),
@@ -182,8 +185,9 @@ class RunResult(_Result):
         super().__init__(summary)
         steps = summary["steps"]
         history: Dict[str, np.ndarray] = {}
-        for name in ["step", "half_period", "k", "iterations"]:
-            history[name] = np.array([s[name] for s in steps], dtype=int)
+        for name in ["step", "half_period", "k", "iterations", "solves"]:
+            if not steps or name in steps[0]:
+                history[name] = np.array([s[name] for s in steps], dtype=int)
         history["direction"] = np.array([s["direction"] for s in steps], dtype=str)
         for name in ["criterion", "dissipation", "delta_w"]:
             if steps and name in steps[0]:

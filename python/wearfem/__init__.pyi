@@ -73,7 +73,7 @@ class RunResult:
     status: str
     converged: bool
     steady_reached: Optional[bool]
-    steady_distance: Optional[Dict[str, Optional[float]]]
+    steady_distance: Optional[Dict[str, Any]]  # pressure, wear, delta_w, summed_pressure (None when meaningless), summed_pressure_note
     solves: int
     failed_solves: int
     unconverged_steps: int

@@ -394,6 +394,29 @@ impl WearRun {
         h.windows(2).all(|w| w[0].direction == w[1].direction)
     }
 
+    /// Why `steady_distance.summed_pressure` (the spread of p⁺ + p⁻ over the points in
+    /// contact in both half cycles of the last cycle) means nothing for this run, if it does
+    /// not: monotonic sliding has one half cycle (and no δw either, eq. 40 compares the two),
+    /// and with fewer than two points in contact in both half cycles the spread is 0 whatever
+    /// the state (red-team review 4, F6).
+    pub fn summed_pressure_unavailable(&self) -> Option<String> {
+        if self.is_monotonic() {
+            return Some(
+                "monotonic sliding has one half cycle per period: no p⁺ + p⁻ and no δw".into(),
+            );
+        }
+        let h = &self.history;
+        let both = h
+            .p_plus
+            .iter()
+            .zip(&h.p_minus)
+            .filter(|(a, b)| **a > 0.0 && **b > 0.0)
+            .count();
+        (both < 2).then(|| {
+            format!("{both} contact point(s) carry pressure in both half cycles of the last cycle: no spread of p⁺ + p⁻ to measure")
+        })
+    }
+
     /// The edge ends in contact in the last cycle of the run (either half cycle).
     pub fn edge_ends(&self) -> Vec<crate::contact::EdgeEnd> {
         self.contact
@@ -410,7 +433,7 @@ impl WearRun {
             .map(|s| {
                 let probes: serde_json::Map<String, Value> = self.probes.iter().zip(&s.probes).map(|((n, _), v)| (n.clone(), number(*v))).collect();
                 {
-                    let mut step = json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "k": s.k, "iterations": s.iterations, "criterion": number(s.criterion), "dissipation": number(s.dissipation), "delta_w": number(s.delta_w), "probes": probes });
+                    let mut step = json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "k": s.k, "iterations": s.iterations, "solves": s.solves, "criterion": number(s.criterion), "dissipation": number(s.dissipation), "delta_w": number(s.delta_w), "probes": probes });
                     if monotonic {
                         // δw compares the two half cycles of a period: none in one direction.
                         step.as_object_mut().map(|o| o.remove("delta_w"));
@@ -476,6 +499,17 @@ impl WearRun {
                     "delta_w": number(d.delta_w),
                     "summed_pressure": number(d.summed_pressure),
                 });
+                if let Some(why) = self.summed_pressure_unavailable() {
+                    // Both compare the two half cycles of a period; a spread over fewer than
+                    // two points is 0 whatever the state. Null, not a number that reads as
+                    // "steady".
+                    let sd = &mut summary["steady_distance"];
+                    sd["summed_pressure"] = Value::Null;
+                    sd["summed_pressure_note"] = json!(why);
+                    if monotonic {
+                        sd["delta_w"] = Value::Null;
+                    }
+                }
                 summary["steady_check"] = check;
                 summary["steady_reached"] = json!(self.steady_check.reached(h));
             }

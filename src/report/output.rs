@@ -170,6 +170,7 @@ pub fn write_wear(
         "direction",
         "k",
         "iterations",
+        "solves",
         "criterion_percent",
         "dissipation_Nmm",
         "delta_w_mm",
@@ -193,6 +194,7 @@ pub fn write_wear(
                 json!(s.direction),
                 json!(s.k),
                 json!(s.iterations),
+                json!(s.solves),
                 number(s.criterion),
                 number(s.dissipation),
             ];
