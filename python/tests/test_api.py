@@ -179,4 +179,6 @@ def test_version_stamp_matches_the_command_line(punch, wearfem_bin):
     assert v.startswith("0.") and v == punch.contact().summary["wearfem_version"]
     assert punch.steady().summary["wearfem_version"] == v
     cli = subprocess.run([str(wearfem_bin), "--version"], capture_output=True, text=True).stdout.split()
-    assert cli == ["wearfem", v]
+    assert cli == ["wearfem", v], (
+        f"{wearfem_bin} was built from another commit than this wheel: rebuild it (cargo build --release)"
+    )

@@ -274,7 +274,8 @@ pub fn contact(
 pub fn pressure_at_one_end(pressure: &[f64]) -> Option<&'static str> {
     let n = pressure.len();
     let peak = pressure.iter().cloned().fold(0.0, f64::max);
-    if n < 2 || !(peak > 0.0) {
+    // `f64::max` skips NaN, so `peak` is 0 unless some pressure is positive.
+    if n < 2 || peak <= 0.0 {
         return None;
     }
     // Pressures below 1e-9 of the peak are round-off of the active-set solve.

@@ -389,12 +389,13 @@ pub fn accept(outcome: &MethodOutcome, tolerance: f64) -> Option<String> {
         return Some(format!("{:?}", outcome.state.status));
     }
     let r = outcome.residual;
-    if outcome.method != SteadyMethod::Averaged && !(r <= RESIDUAL_LIMIT) {
+    // A NaN residual fails both tests.
+    if outcome.method != SteadyMethod::Averaged && (r.is_nan() || r > RESIDUAL_LIMIT) {
         return Some(format!(
             "it ended with an eq. 49 residual of {r:.3e}, above {RESIDUAL_LIMIT} (p⁺ + p⁻ misses p_Σ by more than half its peak: not a steady state)"
         ));
     }
-    if outcome.distance_from_exact.is_none() && !(r <= tolerance) {
+    if outcome.distance_from_exact.is_none() && (r.is_nan() || r > tolerance) {
         return Some(format!(
             "the exact steady state could not be computed to check it (none of one rigid wear per period may exist), and its eq. 49 residual {r:.3e} is above the tolerance {tolerance:.1e}"
         ));
