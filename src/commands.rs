@@ -100,7 +100,27 @@ pub(crate) fn sweep(
         out.join("sweep.csv").display()
     );
     if failed > 0 {
-        return Err(Failure::Compute(format!("{failed} of {} variants did not converge (see the status column of {}); all rows were written", variants.len(), out.join("sweep.csv").display())));
+        // Name each failed variant by its overrides, so that nobody has to find them in the
+        // table; their value cells hold nothing (empty in the CSV, null in the JSON).
+        let names: Vec<String> = variants
+            .iter()
+            .zip(&outcomes)
+            .filter(|(_, o)| !o.converged)
+            .map(|(v, o)| {
+                let sets: Vec<String> = v
+                    .overrides
+                    .iter()
+                    .map(|o| format!("{}={}", o.key, o.value_text()))
+                    .collect();
+                format!("{} ({})", sets.join(" "), o.status)
+            })
+            .collect();
+        return Err(Failure::Compute(format!(
+            "{failed} of {} variants did not converge: {}; their value cells are left empty in {} (null in sweep.json): only their status and time are written",
+            variants.len(),
+            names.join("; "),
+            out.join("sweep.csv").display()
+        )));
     }
     Ok(())
 }
@@ -112,36 +132,76 @@ fn write_text(dir: &Path, name: &str, text: &str) -> Result<(), Failure> {
         .map_err(|e| Failure::Compute(format!("cannot write {}: {e}", path.display())))
 }
 
-/// The settings of `wearfem steady --method ...` from its options.
+/// The options of `wearfem steady` that belong to the §6 methods, as given (`None`: not
+/// given).
+pub(crate) struct MethodOptions {
+    pub reading: Option<String>,
+    pub sensitivities: Option<String>,
+    pub penalty: Option<f64>,
+    pub spline_refinement: Option<u32>,
+    pub tolerance: Option<f64>,
+}
+
+/// Which options each method uses; any other given option is an input error.
+const METHOD_OPTIONS: &str = "exact takes none of them; averaged: --reading; spline: --reading, --sensitivities, --spline-refinement, --tolerance; penalty: --reading, --penalty, --tolerance";
+
+/// The settings of `wearfem steady --method ...` from its options: each checked, and each
+/// given for a method that does not use it refused (it would be ignored in silence).
 pub(crate) fn method_settings(
-    reading: &str,
-    sensitivities: &str,
-    penalty: Option<f64>,
-    tolerance: f64,
+    method: SteadyMethod,
+    o: &MethodOptions,
 ) -> Result<MethodSettings, Failure> {
-    let reading = match reading {
-        "mean" => AveragedReading::Mean,
-        "sum" => AveragedReading::Sum,
-        other => {
+    use SteadyMethod::*;
+    let given = [
+        (
+            "--reading",
+            o.reading.is_some(),
+            &[Averaged, Spline, Penalty][..],
+        ),
+        ("--sensitivities", o.sensitivities.is_some(), &[Spline][..]),
+        ("--penalty", o.penalty.is_some(), &[Penalty][..]),
+        (
+            "--spline-refinement",
+            o.spline_refinement.is_some(),
+            &[Spline][..],
+        ),
+        ("--tolerance", o.tolerance.is_some(), &[Spline, Penalty][..]),
+    ];
+    for (name, is_given, methods) in given {
+        if is_given && !methods.contains(&method) {
+            return Err(Failure::Input(format!(
+                "{name}: does not apply to --method {} ({METHOD_OPTIONS})",
+                method.name()
+            )));
+        }
+    }
+    let defaults = MethodSettings::default();
+    let reading = match o.reading.as_deref() {
+        None => defaults.reading,
+        Some("mean") => AveragedReading::Mean,
+        Some("sum") => AveragedReading::Sum,
+        Some(other) => {
             return Err(Failure::Input(format!(
                 "--reading: must be mean or sum, got \"{other}\""
             )))
         }
     };
-    let sensitivities = match sensitivities {
-        "fd" => Sensitivities::FiniteDifference,
-        "exact" => Sensitivities::Exact,
-        other => {
+    let sensitivities = match o.sensitivities.as_deref() {
+        None => defaults.sensitivities,
+        Some("fd") => Sensitivities::FiniteDifference,
+        Some("exact") => Sensitivities::Exact,
+        Some(other) => {
             return Err(Failure::Input(format!(
                 "--sensitivities: must be fd or exact, got \"{other}\""
             )))
         }
     };
-    if penalty.is_some_and(|c| !(c.is_finite() && c > 0.0)) {
+    if o.penalty.is_some_and(|c| !(c.is_finite() && c > 0.0)) {
         return Err(Failure::Input(
             "--penalty: must be a finite c_n > 0 (MPa/mm)".into(),
         ));
     }
+    let tolerance = o.tolerance.unwrap_or(defaults.tolerance);
     if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 1.0) {
         return Err(Failure::Input(format!(
             "--tolerance: must lie in (0, 1), got {tolerance}"
@@ -150,9 +210,10 @@ pub(crate) fn method_settings(
     Ok(MethodSettings {
         reading,
         sensitivities,
-        penalty_stiffness: penalty,
+        penalty_stiffness: o.penalty,
         tolerance,
-        ..Default::default()
+        spline_refinement: o.spline_refinement.unwrap_or(defaults.spline_refinement),
+        ..defaults
     })
 }
 
@@ -165,6 +226,12 @@ pub(crate) fn steady_by(
     vtk: bool,
 ) -> Result<(), Failure> {
     let (outcome, contact, setup) = driver::steady_by(p, method, settings)?;
+    if outcome.state.status == wearfem::steady::SteadyStatus::NotSteady {
+        // The method ended, but its result fails the acceptance rule: not a steady state, and
+        // nothing of it is written.
+        let why = outcome.not_steady.as_deref().unwrap_or_default();
+        return Err(Failure::Compute(format!("the {} method gave no steady state ({} iterations): {why}; nothing was written (docs/validation.md, \"The four steady-state methods\")", method.name(), outcome.state.iterations)));
+    }
     if outcome.state.status != wearfem::steady::SteadyStatus::Solved {
         // Nothing from a failed solve is written as a result.
         return Err(Failure::Compute(format!("the {} method did not converge in {} iterations ({:?}, eq. 49 residual {:.3e}); nothing was written", method.name(), outcome.state.iterations, outcome.state.status, outcome.residual)));

@@ -65,6 +65,12 @@
 
 #![warn(missing_docs)]
 
+/// The version of this build: the crate version, plus `+g<commit>` (12 hex digits) when it
+/// was built from a git checkout (`build.rs`), e.g. `0.1.0+g1a2b3c4d5e6f`. Every summary.json
+/// carries it as `wearfem_version`, and Python has it as `wearfem.__version__`, so that results
+/// can be traced to the source that computed them.
+pub const VERSION: &str = env!("WEARFEM_VERSION");
+
 pub mod contact;
 pub mod fe;
 pub mod input;

@@ -20,7 +20,7 @@ use commands::{method_settings, steady_by, sweep, validate};
 #[derive(Parser)]
 #[command(
     name = "wearfem",
-    version,
+    version = wearfem::VERSION,
     about = "Steady sliding wear by p-version finite elements (mm, N, MPa, s)"
 )]
 struct Cli {
@@ -90,23 +90,25 @@ enum Command {
         /// (§6.2), penalty (§6.3).
         #[arg(long, default_value = "exact")]
         method: String,
-        /// Reading of eq. 39: mean (what the paper's printed ordinates are) or sum (as printed).
-        #[arg(long, default_value = "mean")]
-        reading: String,
-        /// Spline sensitivities: fd (finite differences, eq. 46) or exact.
-        #[arg(long, default_value = "fd")]
-        sensitivities: String,
-        /// Penalty parameter c_n of the penalty method, MPa/mm (default: the contact stiffness).
+        /// averaged, spline, penalty: reading of eq. 39, mean (default; what the paper's
+        /// printed ordinates are) or sum (as printed).
+        #[arg(long)]
+        reading: Option<String>,
+        /// spline: sensitivities, fd (default; finite differences, eq. 46) or exact.
+        #[arg(long)]
+        sensitivities: Option<String>,
+        /// penalty: penalty parameter c_n, MPa/mm (default: the contact stiffness).
         #[arg(long)]
         penalty: Option<f64>,
-        /// Spline method: bisect every interval between the paper's 17 spline points this many
-        /// times (0: the paper's 17 points, 3-4 % off the exact state at the ends of the
-        /// both-halves contact zone; 1: 33 points, within 0.05 %; docs/validation.md).
-        #[arg(long, default_value_t = 0)]
-        spline_refinement: u32,
-        /// Convergence tolerance of the spline and penalty methods on eq. 49 (relative).
-        #[arg(long, default_value_t = 1e-3)]
-        tolerance: f64,
+        /// spline: bisect every interval between the paper's 17 spline points this many times
+        /// (default 0: the paper's 17 points, 3-4 % off the exact state at the ends of the
+        /// both-halves contact zone; 1: 33 points, within 0.05 %; docs/validation.md); at most
+        /// as many spline points as contact points.
+        #[arg(long)]
+        spline_refinement: Option<u32>,
+        /// spline, penalty: convergence tolerance on eq. 49 (relative; default 1e-3).
+        #[arg(long)]
+        tolerance: Option<f64>,
         /// Also write ParaView files (results.pvd, vtk/*.vtu); same as `[output] vtk = true`.
         #[arg(long)]
         vtk: bool,
@@ -284,11 +286,21 @@ fn run(cli: Cli) -> Result<(), Failure> {
             if let Some(w) = driver::penalty_warning(&p, &contact) {
                 eprintln!("{w}");
             }
-            for w in driver::zone_warnings(&p, &contact, &[&solution.pressure]) {
-                eprintln!("{w}");
+            // The zone diagnostics describe a solution: a failed solve gets none (its
+            // pressures are not one), only what its failure says about the loads.
+            let unbalanced = (!solved)
+                .then(|| driver::pressure_at_one_end(&solution.pressure))
+                .flatten();
+            if solved {
+                for w in driver::zone_warnings(&p, &contact, &[&solution.pressure]) {
+                    eprintln!("{w}");
+                }
             }
             if solved {
                 println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
+            }
+            if let (false, Some(end)) = (solved, unbalanced) {
+                return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}): the loads cannot be balanced on this contact edge. The solver ended with all the pressure on the {end} contact point, the edge's corner: the moment of the load and of friction (μ·l_z with a pin) needs the pressure resultant beyond the edge, so the punch would tip. Refining the mesh does not help; lower contact.friction, move plate.pin closer to the contact, or centre the load. summary.json holds the status and residuals, and no values of the failed solve were written", info.complementarity, info.equilibrium)));
             }
             if info.status == wearfem::complementarity::Status::Failed {
                 return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}); summary.json holds the status and residuals, and no values of the failed solve were written. A solution may not exist: with a plate that rotates about a pin, friction moves the pressure resultant by μ·l_z, and if that leaves the contact the plate tips", info.complementarity, info.equilibrium)));
@@ -313,8 +325,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
             if !result.records_past_end.is_empty() {
                 eprintln!(
-                    "note: wear.record asks for steps {:?}, past the last step of this run (--steps); they are listed as records_past_end in summary.json",
-                    result.records_past_end
+                    "note: wear.record asks for steps {:?}, past the last step of this run ({}); they are not recorded and are listed as records_past_end in summary.json",
+                    result.records_past_end,
+                    match &result.history.stopped {
+                        Some((step, reason)) => format!("it stopped at step {step}: {reason}"),
+                        None => "--steps".to_string(),
+                    }
                 );
             }
             let h = &result.history;
@@ -348,7 +364,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
                         SteadyCheck::Unavailable(why) => format!("no steady state to compare with ({why})"),
                         SteadyCheck::NoCycle => String::new(),
                     };
-                    println!("last cycle: {against}; wear per period rigid to {:.2e} (relative), δw = {:.3e} mm: {verdict}", d.wear, d.delta_w);
+                    // δw compares the two half cycles of a period: none under monotonic sliding.
+                    let delta_w = if result.is_monotonic() {
+                        String::new()
+                    } else {
+                        format!(", δw = {:.3e} mm", d.delta_w)
+                    };
+                    println!("last cycle: {against}; wear per period rigid to {:.2e} (relative){delta_w}: {verdict}", d.wear);
                 }
                 None => println!("no full cycle completed: no final profiles written"),
             }
@@ -389,17 +411,24 @@ fn run(cli: Cli) -> Result<(), Failure> {
             spline_refinement,
             tolerance,
         } => {
+            let method = SteadyMethod::parse(&method).ok_or_else(|| {
+                Failure::Input(format!(
+                    "--method: must be exact, averaged, spline or penalty, got \"{method}\""
+                ))
+            })?;
+            // An option the chosen method does not use is an error, not ignored.
+            let options = commands::MethodOptions {
+                reading,
+                sensitivities,
+                penalty,
+                spline_refinement,
+                tolerance,
+            };
+            let settings = method_settings(method, &options)?;
             let p = load(&problem, &set)?;
             // The paper's §6 methods; `exact` keeps the direct path below (any b, either
             // sliding, ParaView output), whose summary the Python layer reproduces.
-            if method != "exact" {
-                let mut settings = method_settings(&reading, &sensitivities, penalty, tolerance)?;
-                settings.spline_refinement = spline_refinement;
-                let method = SteadyMethod::parse(&method).ok_or_else(|| {
-                    Failure::Input(format!(
-                        "--method: must be exact, averaged, spline or penalty, got \"{method}\""
-                    ))
-                })?;
+            if method != SteadyMethod::Exact {
                 return steady_by(&p, method, settings, &out, wants_vtk(vtk, &p));
             }
             let (state, contact, seconds) = driver::steady(&p)?;

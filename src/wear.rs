@@ -356,6 +356,10 @@ impl WearIntegrator {
                 ),
             );
         }
+        if spec.criterion != "eq27" && spec.scheme != "fixed_point" {
+            // The implicit scheme has no such criterion: a choice it would ignore is an error.
+            return bad("criterion", format!("\"{}\" applies to scheme = \"fixed_point\" only, and the scheme is \"{}\"; remove the key or set wear.scheme = \"fixed_point\"", spec.criterion, spec.scheme));
+        }
         // Upper limits far beyond any use, so that a typo cannot exhaust memory (one record per
         // step), run for days, or overflow the half-period counter.
         if !(1..=MAX_STEPS).contains(&spec.steps) {

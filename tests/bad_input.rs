@@ -306,6 +306,36 @@ fn a_failed_contact_solve_writes_no_values() {
     std::fs::remove_dir_all(&out).unwrap();
 }
 
+/// Red-team review 4, F6a: loads that cannot be balanced on the contact edge (μ = 2 on the
+/// small pinned punch: the friction moment needs the pressure centroid 80 mm outside a 60 mm
+/// punch) leave all the failed solve's pressure on one corner point. The message says that the
+/// loads cannot be balanced (the punch tips), not "only 1 contact point carries pressure …
+/// refine", which cannot help; no zone diagnostics are drawn from the failed solve.
+#[test]
+fn loads_that_cannot_be_balanced_are_named_not_blamed_on_the_mesh() {
+    let problem = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/small-punch.toml"
+    );
+    for set in ["contact.friction=2", "plate.pin=[0, 100000]"] {
+        let out = std::env::temp_dir().join(format!("wearfem-tipping-{}", std::process::id()));
+        let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args(["contact", problem, "--set", set, "--out"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert_eq!(result.status.code(), Some(1), "{set}");
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert!(
+            stderr.contains("the loads cannot be balanced on this contact edge")
+                && stderr.contains("tip"),
+            "{set}: {stderr}"
+        );
+        assert!(!stderr.contains("Refine body 1"), "{set}: {stderr}");
+        let _ = std::fs::remove_dir_all(&out);
+    }
+}
+
 /// What the model leaves out is said, not silent: a stroke far beyond the contact edge (fixed
 /// contact pairs) and body 2 wearing under monotonic sliding each give a warning, and the
 /// shipped punch-b40 (stroke 5 % of its edge) gives none.
@@ -362,4 +392,133 @@ fn a_soft_penalty_is_warned_about() {
     };
     assert!(stderr("1e5").contains("contact.penalty: c_n = 1e5 MPa/mm is soft"));
     assert!(!stderr("1e9").contains("is soft"));
+}
+
+/// Red-team review 4, F5: options and keys that would be ignored, or capped, in silence.
+#[test]
+fn options_a_method_does_not_use_are_refused() {
+    let problem = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/small-punch.toml"
+    );
+    let steady = |args: &[&str]| {
+        let out = std::env::temp_dir().join(format!("wearfem-options-{}", std::process::id()));
+        let r = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args(["steady", problem, "--quiet", "--out"])
+            .arg(&out)
+            .args(args)
+            .output()
+            .unwrap();
+        let _ = std::fs::remove_dir_all(&out);
+        (
+            r.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&r.stderr).to_string(),
+        )
+    };
+    // Each option given to a method that does not use it: exit 2, naming the option and the
+    // method.
+    for (args, option, method) in [
+        (&["--tolerance", "1e-30"][..], "--tolerance", "exact"),
+        (&["--reading", "sum"][..], "--reading", "exact"),
+        (
+            &["--method", "averaged", "--tolerance", "0.1"][..],
+            "--tolerance",
+            "averaged",
+        ),
+        (
+            &["--method", "penalty", "--sensitivities", "exact"][..],
+            "--sensitivities",
+            "penalty",
+        ),
+        (
+            &["--method", "spline", "--penalty", "5"][..],
+            "--penalty",
+            "spline",
+        ),
+        (
+            &["--method", "penalty", "--spline-refinement", "1"][..],
+            "--spline-refinement",
+            "penalty",
+        ),
+    ] {
+        let (code, err) = steady(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(
+            err.contains(&format!("{option}: does not apply to --method {method}")),
+            "{args:?}: {err}"
+        );
+    }
+    // 33 contact points determine at most 33 spline points (refinement 1); 3 (129 points) was
+    // capped to 1 without a word.
+    let (code, err) = steady(&["--method", "spline", "--spline-refinement", "3"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("--spline-refinement") && err.contains("largest allowed value is 1"),
+        "{err}"
+    );
+    // The options that apply are taken.
+    let (code, err) = steady(&[
+        "--method",
+        "spline",
+        "--spline-refinement",
+        "1",
+        "--tolerance",
+        "1e-4",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    // wear.criterion belongs to the fixed-point scheme; the implicit scheme ignored it.
+    let text = std::fs::read_to_string(problem)
+        .unwrap()
+        .replace("steps = 300", "steps = 300\ncriterion = \"pointwise\"");
+    let (code, err) = run_cli("run", &[], &text, "criterion-implicit");
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("wear.criterion") && err.contains("fixed_point"),
+        "{err}"
+    );
+    let fixed = text
+        .replace("steps = 300", "steps = 3\nscheme = \"fixed_point\"")
+        .replace("record = [1, 2, 100]", "record = [1]");
+    let (code, err) = run_cli("run", &[], &fixed, "criterion-fixed-point");
+    assert_eq!(code, 0, "{err}");
+}
+
+/// Red-team review 4, F5: an adaptive run that stops at the steady state before some
+/// `wear.record` steps lists them in `records_past_end` (as a run shortened by `--steps`
+/// does) and says so, instead of dropping them.
+#[test]
+fn records_after_an_adaptive_stop_are_listed() {
+    let problem = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/small-punch.toml"
+    );
+    let out = std::env::temp_dir().join(format!("wearfem-records-{}", std::process::id()));
+    let r = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .args(["run", problem, "--quiet", "--out"])
+        .arg(&out)
+        .args(["--set", "wear.adaptive={}", "--set", "wear.steps=20000"])
+        .args([
+            "--set",
+            "wear.body1.beta=4e-7",
+            "--set",
+            "wear.record=[1, 100, 5000, 20000]",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&r.stderr);
+    assert_eq!(r.status.code(), Some(0), "{err}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    // The run stops near step 164 (measured), long before 5000.
+    let stop = summary["stopped_at_step"].as_u64().unwrap();
+    assert!((100..5000).contains(&stop), "stopped at {stop}");
+    assert_eq!(
+        summary["records_past_end"],
+        serde_json::json!([5000, 20000])
+    );
+    assert!(
+        err.contains("records_past_end") && err.contains("[5000, 20000]"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&out);
 }

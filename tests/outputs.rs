@@ -176,3 +176,173 @@ fn shape_is_the_initial_gap_plus_the_wear_and_wear_is_the_wear() {
     assert!((shape_mid - wear[mid].as_f64().unwrap()).abs() < 1e-12);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn every_summary_says_which_build_wrote_it() {
+    // Red-team review 4, N1: a stale Python wheel gave other results than the binary, and
+    // nothing told them apart. Every summary.json (and sweep.json) now carries
+    // `wearfem_version`, the crate version plus the git commit when built from a checkout,
+    // the same string as `wearfem --version`.
+    let problem = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/small-punch.toml"
+    );
+    let version = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .arg("--version")
+        .output()
+        .unwrap();
+    let version = String::from_utf8_lossy(&version.stdout).trim().to_string();
+    assert_eq!(version, format!("wearfem {}", wearfem::VERSION));
+    assert!(wearfem::VERSION.starts_with(env!("CARGO_PKG_VERSION")));
+    // The tests run from a git checkout (CI clones the repository): the commit is there.
+    if std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.git")).exists() {
+        assert!(wearfem::VERSION.contains("+g"), "{}", wearfem::VERSION);
+    }
+    let dir = std::env::temp_dir().join(format!("wearfem-version-{}", std::process::id()));
+    for (args, file) in [
+        (&["elastic", "lame"][..], "summary.json"),
+        (&["contact", problem][..], "summary.json"),
+        (&["run", problem, "--steps", "2"][..], "summary.json"),
+        (&["steady", problem][..], "summary.json"),
+        (
+            &["steady", problem, "--method", "penalty"][..],
+            "summary.json",
+        ),
+        (
+            &["sweep", problem, "--set", "contact.friction=[0.1]"][..],
+            "sweep.json",
+        ),
+    ] {
+        let _ = std::fs::remove_dir_all(&dir);
+        let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args(args)
+            .args(["--quiet", "--out"])
+            .arg(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join(file)).unwrap()).unwrap();
+        assert_eq!(v["wearfem_version"], wearfem::VERSION, "{args:?}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Run `wearfem run` on the small punch with `sets`; returns summary.json and history.csv.
+fn small_punch_run(sets: &[&str], tag: &str) -> (serde_json::Value, String) {
+    let problem = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/small-punch.toml"
+    );
+    let dir = std::env::temp_dir().join(format!("wearfem-f6-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_wearfem"));
+    cmd.args(["run", problem, "--quiet", "--out"]).arg(&dir);
+    for s in sets {
+        cmd.args(["--set", s]);
+    }
+    let out = cmd.output().unwrap();
+    assert!(
+        out.status.success(),
+        "{tag}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let history = std::fs::read_to_string(dir.join("history.csv")).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    (summary, history)
+}
+
+#[test]
+fn steady_distance_has_no_meaningless_numbers_and_history_counts_solves() {
+    // Red-team review 4, F6b: under monotonic sliding summed_pressure was 0.999 at the steady
+    // state and delta_w the whole wear of a step; both compare two half cycles.
+    let (s, _) = small_punch_run(
+        &[
+            "wear.sliding=monotonic",
+            "wear.speed=10",
+            "wear.step_time=1",
+            "wear.record=[1]",
+        ],
+        "monotonic",
+    );
+    let d = &s["steady_distance"];
+    assert!(
+        d["summed_pressure"].is_null() && d["delta_w"].is_null(),
+        "{d}"
+    );
+    assert!(d["summed_pressure_note"]
+        .as_str()
+        .unwrap()
+        .contains("monotonic"));
+    assert!(d["wear"].as_f64().unwrap() < 0.01, "{d}");
+    // F6c: a load on a 2 mm window near one end, far from steady (wear rigid to only 0.84):
+    // no point carries pressure in both half cycles, and summed_pressure was 0.0, the value
+    // of the steady state. Now null with the reason.
+    let (s, _) = small_punch_run(
+        &[
+            "bodies[0].tractions[0].normal=300",
+            "bodies[0].tractions[0].window={x=[18,20]}",
+            "wear.adaptive={}",
+            "wear.steps=100000",
+            "wear.body1.beta=4e-7",
+            "wear.record=[1]",
+        ],
+        "window",
+    );
+    let d = &s["steady_distance"];
+    assert!(d["wear"].as_f64().unwrap() > 0.5, "{d}");
+    assert!(d["summed_pressure"].is_null(), "{d}");
+    assert!(d["summed_pressure_note"]
+        .as_str()
+        .unwrap()
+        .contains("both half cycles"));
+    // A reciprocating run with a proper two-sided zone keeps its number.
+    let (s, _) = small_punch_run(&["wear.record=[1]"], "reciprocating");
+    assert!(
+        s["steady_distance"]["summed_pressure"].is_f64(),
+        "{}",
+        s["steady_distance"]
+    );
+    assert!(s["steady_distance"].get("summed_pressure_note").is_none());
+    // F6d: history.csv and steps[] have the per-step `solves` the docs promise; with step
+    // doubling the coarse cycles' solves are in the step after them, so the column sums to
+    // the run's total, which exceeds the number of steps.
+    let (s, history) = small_punch_run(
+        &[
+            "wear.adaptive={method=\"step_doubling\"}",
+            "wear.steps=20000",
+            "wear.body1.beta=4e-7",
+            "wear.record=[1]",
+        ],
+        "doubling",
+    );
+    let mut lines = history.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = header
+        .iter()
+        .position(|h| *h == "solves")
+        .expect("solves column");
+    let total: u64 = lines
+        .map(|l| l.split(',').nth(col).unwrap().parse::<u64>().unwrap())
+        .sum();
+    let steps = s["steps"].as_array().unwrap();
+    assert_eq!(total, s["solves"].as_u64().unwrap());
+    assert_eq!(
+        total,
+        steps
+            .iter()
+            .map(|r| r["solves"].as_u64().unwrap())
+            .sum::<u64>()
+    );
+    assert!(
+        total > steps.len() as u64,
+        "{total} solves in {} steps",
+        steps.len()
+    );
+}

@@ -312,3 +312,52 @@ fn a_huge_spline_refinement_is_capped_at_the_contact_resolution() {
     assert_eq!(capped.state.shape, two.state.shape);
     assert!(capped.state.shape.iter().all(|g| g.is_finite()));
 }
+
+#[test]
+fn a_method_result_that_is_not_a_steady_state_is_not_reported_as_one() {
+    // Red-team review 4, F3: on the small punch with μ = 0.5 no steady state of one rigid wear
+    // per period exists (the exact method does not converge). The spline method stopped at a
+    // stationary point with an eq. 49 residual of 1.00 and the averaged shape has 4.98; both
+    // said "Solved", exit 0. With μ = 0 (exact answer: uniform 10 MPa) the spline ended at
+    // 1.00 as well. The acceptance rule (paper_steady::accept) rejects all three: exit 1,
+    // the residual in the message, nothing written. The same problem's default (μ = 0.25)
+    // still passes with every method, well inside the rule (spline 2e-3, penalty 4e-4).
+    let problem = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/small-punch.toml"
+    );
+    let run = |args: &[&str], tag: &str| {
+        let dir = std::env::temp_dir().join(format!(
+            "wearfem-paper-steady-accept-{tag}-{}",
+            std::process::id()
+        ));
+        let _ = std::fs::remove_dir_all(&dir);
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args(["steady", problem, "--quiet", "--out", dir.to_str().unwrap()])
+            .args(args)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr).to_string();
+        (out.status.code().unwrap_or(-1), err, dir)
+    };
+    for (mu, method, residual) in [
+        ("0.5", "spline", "1.000e0"),
+        ("0.5", "averaged", "4.976e0"),
+        ("0", "spline", "1.000e0"),
+    ] {
+        let set = format!("contact.friction={mu}");
+        let (code, err, dir) = run(&["--method", method, "--set", &set], method);
+        assert_eq!(code, 1, "μ = {mu}, {method}: {err}");
+        assert!(
+            err.contains("gave no steady state") && err.contains(residual),
+            "μ = {mu}, {method}: {err}"
+        );
+        assert!(!dir.exists(), "μ = {mu}, {method}: something was written");
+    }
+    for method in ["averaged", "spline", "penalty"] {
+        let (code, err, dir) = run(&["--method", method], method);
+        assert_eq!(code, 0, "{method}: {err}");
+        assert!(dir.join("summary.json").exists());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

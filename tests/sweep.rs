@@ -146,3 +146,98 @@ fn a_bad_key_stops_the_study_before_any_work() {
         assert!(!dir.exists(), "{set}: something was written");
     }
 }
+
+/// The cells of one CSV row, split at commas outside quotes.
+fn csv_cells(line: &str) -> Vec<String> {
+    let (mut cells, mut cell, mut quoted) = (Vec::new(), String::new(), false);
+    for c in line.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ',' if !quoted => cells.push(std::mem::take(&mut cell)),
+            _ => cell.push(c),
+        }
+    }
+    cells.push(cell);
+    cells
+}
+
+#[test]
+fn a_variant_that_did_not_converge_has_no_values() {
+    // Red-team review 4, F1: non-converged rows carried the last iterate's pressures, rigid
+    // wear (negative) and a shape range of 2e15 mm. Now every value cell of such a row is
+    // empty (CSV) or null (JSON); status, converged and seconds stay, and the stderr line
+    // names the variant. μ = 0.9 on punch-b40: the steady iteration does not converge (the
+    // friction moment separates the half cycles' zones) and the run's first contact solve
+    // fails (the plate tips); μ = 0.1 converges in both jobs.
+    for job in ["--steady", "--run"] {
+        let dir = scratch(&format!("failed{job}"));
+        let (code, _, err) = wearfem(&[
+            "sweep",
+            "punch-b40",
+            "--set",
+            "contact.friction=[0.1, 0.9]",
+            "--set",
+            "wear.steps=20",
+            "--set",
+            "wear.record=[[20]]",
+            job,
+            "--quiet",
+            "--out",
+            dir.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 1, "{job}: {err}");
+        assert!(
+            err.contains("contact.friction=0.9") && err.contains("left empty"),
+            "{job}: {err}"
+        );
+        assert!(!err.contains("contact.friction=0.1 "), "{job}: {err}");
+        let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
+        let lines: Vec<&str> = csv.lines().collect();
+        let header = csv_cells(lines[0]);
+        let values: Vec<usize> = (0..header.len())
+            .filter(|&c| {
+                header[c].ends_with("_MPa")
+                    || header[c].ends_with("_mm")
+                    || header[c].ends_with("_rad")
+            })
+            .collect();
+        assert!(values.len() >= 4, "{job}: {}", lines[0]);
+        let good = csv_cells(lines[1]);
+        let bad = csv_cells(lines[2]);
+        assert!(!bad[2].contains("solved"), "{job}: {}", lines[2]);
+        for &c in &values {
+            assert!(
+                good[c].parse::<f64>().is_ok(),
+                "{job}: {} = {:?}",
+                header[c],
+                good[c]
+            );
+            assert_eq!(bad[c], "", "{job}: {} of the failed variant", header[c]);
+        }
+        assert!(bad.last().unwrap().parse::<f64>().unwrap() > 0.0, "seconds");
+        let rows = json(&dir.join("sweep.json"))["variants"].clone();
+        let (good, bad) = (&rows[0], &rows[1]);
+        assert_eq!(good["converged"], true);
+        assert_eq!(bad["converged"], false);
+        for key in [
+            "peak_p_plus",
+            "peak_p_minus",
+            "shape_range",
+            "p_plus",
+            "p_minus",
+            "shape",
+        ] {
+            assert!(!good[key].is_null(), "{job}: {key}");
+            assert!(bad[key].is_null(), "{job}: {key} = {}", bad[key]);
+        }
+        for group in ["probes_p_plus", "probes_p_minus", "rigid_wear_per_period"] {
+            if let Some(map) = bad[group].as_object() {
+                assert!(
+                    !map.is_empty() && map.values().all(|v| v.is_null()),
+                    "{job}: {group}"
+                );
+            }
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

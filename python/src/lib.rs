@@ -225,6 +225,18 @@ impl PyProblem {
             driver::steady(p).map(|(state, contact, seconds)| {
                 let mut summary = wearfem::output::steady_summary(p, &contact, &state, seconds);
                 summary["probe_points"] = serde_json::json!(driver::contact_probes(p, &contact));
+                if state.status != wearfem::steady::SteadyStatus::Solved {
+                    // The command line writes nothing for an iteration that did not converge;
+                    // here the status, iterations and residual are returned, but none of the
+                    // last iterate's values (as for a failed contact solve).
+                    for key in ["p_plus", "p_minus", "p_sum", "shape", "rigid_wear_per_period"] {
+                        if summary.get(key).is_some() {
+                            summary[key] = serde_json::Value::Null;
+                        }
+                    }
+                    summary["edge_ends_in_contact"] = serde_json::json!([]);
+                    summary["coarse_partner_zones"] = serde_json::json!([]);
+                }
                 summary
             })
         });
@@ -291,6 +303,8 @@ impl PyProblem {
 #[pymodule]
 fn _wearfem(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyProblem>()?;
-    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    // The library's build stamp (crate version + git commit), as summary.json's
+    // `wearfem_version`: a wheel out of step with the command line shows it.
+    m.add("__version__", wearfem::VERSION)?;
     Ok(())
 }

@@ -90,6 +90,22 @@ def test_failed_contact_solve_has_no_values(punch):
     assert r.pressure is None and r.gap is None and r.rigid is None
 
 
+def test_steady_that_did_not_converge_has_no_values(punch):
+    """Red-team review 4, F2: μ = 0.9 on punch-b40 has no steady state of one rigid wear per
+    period (the friction moment separates the half cycles' zones); the iteration stops at its
+    limit. The result carries the status and residual and None for every value (the command
+    line writes nothing and exits 1), not the last iterate's pressures and shape."""
+    s = punch.with_overrides({"contact.friction": 0.9}).steady()
+    assert s.status == "MaxIterations" and not s.converged
+    assert s.wear_residual > 0.1
+    for name in ["p_plus", "p_minus", "p_sum", "shape", "rigid_wear_per_period", "probes"]:
+        assert getattr(s, name) is None, name
+    assert s.summary["p_plus"] is None and s.summary["edge_ends_in_contact"] == []
+    # A converged one still has all of them.
+    ok = punch.with_overrides({"contact.friction": 0.1}).steady()
+    assert ok.converged and ok.p_plus is not None and ok.probes is not None
+
+
 def test_override_load_scales_pressure(punch):
     """The paper's eq. 23a: in the periodic steady state p⁺ + p⁻ = 2 p̃ at every contact
     point, p̃ = the normal traction on the punch top (punch and top are equally wide). Set
@@ -151,3 +167,18 @@ def test_non_converged_steady_is_a_result_not_an_exception(punch, cli):
     assert not s.converged and s.status != "Solved"
     proc, out = cli("steady", "punch-b40", "--set", "contact.friction=0.4", "--set", "plate.pin=[1100, 160]")
     assert proc.returncode == 1 and "did not converge" in proc.stderr
+
+
+def test_version_stamp_matches_the_command_line(punch, wearfem_bin):
+    """Red-team review 4, N1: a stale wheel went unnoticed. ``wearfem.__version__`` is the
+    library's build stamp (crate version + git commit), the ``wearfem_version`` of every
+    summary and what ``wearfem --version`` prints for a binary built from the same source."""
+    import subprocess
+
+    v = wearfem.__version__
+    assert v.startswith("0.") and v == punch.contact().summary["wearfem_version"]
+    assert punch.steady().summary["wearfem_version"] == v
+    cli = subprocess.run([str(wearfem_bin), "--version"], capture_output=True, text=True).stdout.split()
+    assert cli == ["wearfem", v], (
+        f"{wearfem_bin} was built from another commit than this wheel: rebuild it (cargo build --release)"
+    )

@@ -49,6 +49,22 @@ def test_study_equals_cli_sweep(punch, cli):
         assert table["shape_range"][i] == row["shape_range"]
 
 
+@pytest.mark.parametrize("job", ["steady", "run"])
+def test_a_variant_that_did_not_converge_has_nan_values(punch, job):
+    """Red-team review 4, F1: a variant that did not converge (μ = 0.9: no steady state of
+    this form; the run's first contact solve fails) has NaN in every value column, not the
+    numbers of its failed solve (nor 0.0 for a run that made no step)."""
+    grid = {"contact.friction": [0.1, 0.9], "wear.steps": [20], "wear.record": [[20]]}
+    table = wearfem.study(punch, grid, job=job)
+    assert list(table["converged"]) == [True, False]
+    values = [c for c in table if c.startswith(("peak_", "p_plus_", "p_minus_", "lambda_")) or c == "shape_range"]
+    assert "peak_p_plus" in values and "shape_range" in values
+    for c in values:
+        assert np.isfinite(table[c][0]), c
+        assert np.isnan(table[c][1]), (c, table[c][1])
+    assert table["seconds"][1] > 0
+
+
 def test_bad_variant_raises_before_solving(punch):
     with pytest.raises(wearfem.WearfemError) as e:
         wearfem.study(punch, {"contact.friction": [0.2, "x"]})

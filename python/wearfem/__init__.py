@@ -122,43 +122,62 @@ class SteadyResult(_Result):
 
     Arrays, one entry per contact point: ``x`` (mm), ``p_plus``, ``p_minus``, ``p_sum``
     (MPa; ``p_minus`` and ``p_sum`` are None for monotonic sliding), ``shape`` (worn shape,
-    mm). Scalars: ``status`` ("Solved" or why not: a non-converged solve is returned with its
-    status, never raised), ``converged``, ``iterations``, ``wear_residual`` (relative),
-    ``rigid_wear_per_period`` ({"lambda_F": mm, "lambda_M": rad}), ``probes`` (p⁺ at the
-    contact point nearest to each probe, MPa), ``seconds`` (s, set-up included).
+    mm). Scalars: ``status`` ("Solved" or why not), ``converged``, ``iterations``,
+    ``wear_residual`` (relative), ``rigid_wear_per_period`` ({"lambda_F": mm, "lambda_M":
+    rad}), ``probes`` (p⁺ at the contact point nearest to each probe, MPa), ``seconds`` (s,
+    set-up included).
+
+    A solve that did not converge is returned, not raised, with its ``status``,
+    ``iterations`` and ``wear_residual``; its values (``p_plus``, ``p_minus``, ``p_sum``,
+    ``shape``, ``rigid_wear_per_period``, ``probes``) are None: nothing of the last iterate is
+    a result (the command line writes nothing and exits 1).
     """
 
     def __init__(self, summary):
         points = summary.pop("probe_points", [])
         super().__init__(summary)
-        self.x = _array(summary["x"])
-        self.p_plus = _array(summary["p_plus"])
-        self.p_minus = _array(summary["p_minus"]) if "p_minus" in summary else None
-        self.p_sum = _array(summary["p_sum"]) if "p_sum" in summary else None
-        self.shape = _array(summary["shape"])
         self.status: str = summary["status"]
         self.converged: bool = self.status == "Solved"
+        self.x = _array(summary["x"])
+
+        def profile(key):
+            value = summary.get(key)
+            return _array(value) if value is not None else None
+
+        self.p_plus = profile("p_plus")
+        self.p_minus = profile("p_minus")
+        self.p_sum = profile("p_sum")
+        self.shape = profile("shape")
         self.sliding: str = summary["sliding"]
         self.iterations: int = summary["iterations"]
         self.wear_residual: float = summary["wear_residual"]
-        self.rigid_wear_per_period: Dict[str, float] = summary["rigid_wear_per_period"]
+        self.rigid_wear_per_period: Optional[Dict[str, float]] = summary["rigid_wear_per_period"]
         self.seconds: float = summary["seconds"]
-        self.probes: Dict[str, float] = {name: float(self.p_plus[i]) for name, i in points}
+        self.probes: Optional[Dict[str, float]] = (
+            {name: float(self.p_plus[i]) for name, i in points}
+            if self.p_plus is not None
+            else None
+        )
 
 
 class RunResult(_Result):
     """Wear time integration (``wearfem run``).
 
     ``history``: a dict of arrays, one entry per step, ready for ``pandas.DataFrame``: step,
-    half_period, direction ("+"/"−"), k, iterations, criterion (%), dissipation (N·mm),
+    half_period, direction ("+"/"−"), k, iterations, solves (contact solves of the step),
+    criterion (%), dissipation (N·mm),
     delta_w (mm, reciprocating only) and ``p_<probe>`` (MPa). Final profiles (None when the
     run did not complete a cycle): ``x`` (mm), ``p_plus``, ``p_minus``, ``p_sum`` (MPa),
     ``shape`` (mm). Scalars: ``status`` ("solved", or what went wrong), ``converged``,
     ``steady_reached`` (the last cycle's pressures within 1 % of the peak of the steady
     state of the same problem, or, where none exists, its wear rigid to 1 %),
     ``steady_distance`` (a dict: ``pressure``, that distance relative to the peak, None
-    without a steady state; ``wear``, ``delta_w`` mm, ``summed_pressure``), ``solves``,
-    ``failed_solves``, ``unconverged_steps``,
+    without a steady state; ``wear``, ``delta_w`` mm, ``summed_pressure``; ``delta_w`` is None
+    for monotonic sliding and ``summed_pressure`` None, with ``summed_pressure_note`` saying
+    why, when fewer than two points carry pressure in both half cycles), ``solves``,
+    ``failed_solves``, ``unconverged_steps``, ``oscillating_steps`` (``converged`` is False
+    when any of these three is non-zero or the run stopped early for another reason than the
+    steady state; the profiles and steps are then only those of the completed steps),
     ``sliding_distance_m`` (m), ``setup_seconds``, ``run_seconds`` (s).
     """
 
@@ -166,8 +185,9 @@ class RunResult(_Result):
         super().__init__(summary)
         steps = summary["steps"]
         history: Dict[str, np.ndarray] = {}
-        for name in ["step", "half_period", "k", "iterations"]:
-            history[name] = np.array([s[name] for s in steps], dtype=int)
+        for name in ["step", "half_period", "k", "iterations", "solves"]:
+            if not steps or name in steps[0]:
+                history[name] = np.array([s[name] for s in steps], dtype=int)
         history["direction"] = np.array([s["direction"] for s in steps], dtype=str)
         for name in ["criterion", "dissipation", "delta_w"]:
             if steps and name in steps[0]:
@@ -184,6 +204,7 @@ class RunResult(_Result):
         self.solves: int = summary["solves"]
         self.failed_solves: int = summary["failed_solves"]
         self.unconverged_steps: int = summary["unconverged_steps"]
+        self.oscillating_steps: int = summary.get("oscillating_steps", 0)
         self.steady_reached: Optional[bool] = summary.get("steady_reached")
         self.steady_distance: Optional[Dict[str, Optional[float]]] = summary.get("steady_distance")
         self.sliding_distance_m: Optional[float] = summary["sliding_distance_m"]
@@ -194,12 +215,20 @@ class RunResult(_Result):
             problems.append(f"failed solves {self.failed_solves}")
         if self.unconverged_steps:
             problems.append(f"unconverged steps {self.unconverged_steps}")
+        if self.oscillating_steps:
+            problems.append(f"oscillating steps {self.oscillating_steps}")
         if "stop_reason" in summary:
             problems.append(
                 f"stopped at step {summary['stopped_at_step']}: {summary['stop_reason']}"
             )
         self.status: str = ", ".join(problems) if problems else "solved"
-        self.converged: bool = not (self.failed_solves or self.unconverged_steps)
+        # As the command line's exit code: any failed, unconverged or oscillating step.
+        stopped_early = summary.get("stop_reason", "the steady state was reached") != (
+            "the steady state was reached"
+        )
+        self.converged: bool = not (
+            self.failed_solves or self.unconverged_steps or self.oscillating_steps or stopped_early
+        )
 
 
 class Problem:

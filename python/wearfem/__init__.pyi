@@ -46,17 +46,19 @@ class ContactResult:
 class SteadyResult:
     summary: Dict[str, Any]
     x: FloatArray  # mm
-    p_plus: FloatArray  # MPa
+    # The values are None when the solve did not converge (converged False): nothing of the
+    # last iterate is a result.
+    p_plus: Optional[FloatArray]  # MPa
     p_minus: Optional[FloatArray]  # MPa, None for monotonic sliding
     p_sum: Optional[FloatArray]  # MPa, None for monotonic sliding
-    shape: FloatArray  # mm
+    shape: Optional[FloatArray]  # mm
     status: str  # "Solved", or why not
     converged: bool
     sliding: str
     iterations: int
     wear_residual: float
-    rigid_wear_per_period: Dict[str, float]  # lambda_F mm, lambda_M rad
-    probes: Dict[str, float]  # p⁺ at the probes, MPa
+    rigid_wear_per_period: Optional[Dict[str, float]]  # lambda_F mm, lambda_M rad
+    probes: Optional[Dict[str, float]]  # p⁺ at the probes, MPa
     seconds: float
     def __getitem__(self, key: str) -> Any: ...
 
@@ -71,10 +73,11 @@ class RunResult:
     status: str
     converged: bool
     steady_reached: Optional[bool]
-    steady_distance: Optional[Dict[str, Optional[float]]]
+    steady_distance: Optional[Dict[str, Any]]  # pressure, wear, delta_w, summed_pressure (None when meaningless), summed_pressure_note
     solves: int
     failed_solves: int
     unconverged_steps: int
+    oscillating_steps: int
     sliding_distance_m: Optional[float]  # m
     setup_seconds: float
     run_seconds: float

@@ -31,7 +31,10 @@ def variants(grid: Grid) -> List[Dict[str, Any]]:
 def solve_variant(problem, job: str = "steady") -> Dict[str, Any]:
     """One variant's row: status, converged, peak_p_plus, peak_p_minus (MPa), p_plus_<probe>,
     p_minus_<probe> (MPa), rigid wear per period (lambda_F mm, lambda_M rad; steady only),
-    shape_range (mm), seconds (s, this variant's own wall time). Runs with the GIL released."""
+    shape_range (mm), seconds (s, this variant's own wall time). Runs with the GIL released.
+
+    A variant that did not converge (``converged`` False) has NaN for every value: nothing of
+    a failed or non-converged solve is a result (``wearfem sweep`` leaves those cells empty)."""
     row = json.loads(problem._inner._study_row(job))
     out: Dict[str, Any] = {
         "status": row["status"],
@@ -87,7 +90,7 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
 
     Every variant is validated here before any is solved: a bad key or value raises
     :class:`wearfem.WearfemError` naming it. A variant that does not converge is a row with
-    its ``status`` and ``converged = False``.
+    its ``status``, ``converged = False`` and NaN for every value.
 
     Returns a pandas DataFrame (one row per variant, in grid order) when pandas is installed,
     else a dict of numpy arrays with the same columns: the override keys, then the columns of

@@ -63,6 +63,7 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
     }
     Ok(json!({
         "title": problem.spec.title,
+        "wearfem_version": crate::VERSION,
         "dofs": dofs,
         "condensed_dofs": condensed,
         "strain_energy": number(energy),
@@ -233,6 +234,7 @@ pub fn contact(
         .collect();
     let summary = json!({
         "title": problem.spec.title,
+        "wearfem_version": crate::VERSION,
         "points": contact.len(),
         "x": contact.points.x.iter().map(|p| number(p[0])).collect::<Vec<_>>(),
         "z": contact.points.x.iter().map(|p| number(p[1])).collect::<Vec<_>>(),
@@ -262,6 +264,29 @@ pub fn contact(
     Ok((summary, contact, solution, info))
 }
 
+/// The edge end at which a failed contact solve left all its pressure, if it did: "first" or
+/// "last" contact point. That is the signature of loads that cannot be balanced on this
+/// contact edge (the friction moment about the pin, or an eccentric load, needs the pressure
+/// resultant beyond the edge: the punch would tip); the solver ends with every force on one
+/// corner point and a complementarity residual it cannot reduce. Refining the mesh does not
+/// help then, so the "too few contact points" advice of [`zone_warnings`] would mislead.
+/// Only used to explain a failure: the pressures of a failed solve are never a result.
+pub fn pressure_at_one_end(pressure: &[f64]) -> Option<&'static str> {
+    let n = pressure.len();
+    let peak = pressure.iter().cloned().fold(0.0, f64::max);
+    // `f64::max` skips NaN, so `peak` is 0 unless some pressure is positive.
+    if n < 2 || peak <= 0.0 {
+        return None;
+    }
+    // Pressures below 1e-9 of the peak are round-off of the active-set solve.
+    let carrying: Vec<usize> = (0..n).filter(|&i| pressure[i] > 1e-9 * peak).collect();
+    match carrying[..] {
+        [0] => Some("first"),
+        [i] if i == n - 1 => Some("last"),
+        _ => None,
+    }
+}
+
 /// A finished wear run with its set-up.
 pub struct WearRun {
     /// The condensed contact problem.
@@ -274,7 +299,9 @@ pub struct WearRun {
     pub setup_seconds: f64,
     /// Seconds spent integrating.
     pub run_seconds: f64,
-    /// Steps of `wear.record` past the end of a run shortened by the `steps` argument.
+    /// Steps of `wear.record` that were not recorded because the run ended before them: past
+    /// the end of a run shortened by the `steps` argument, or after the last completed step of
+    /// a run that stopped early (an adaptive run at the steady state, a failed solve).
     pub records_past_end: Vec<usize>,
     /// Sliding distance of one half period (monotonic: of one step unit), mm.
     pub sliding_per_half_period: f64,
@@ -339,6 +366,15 @@ pub fn wear(
         on_step,
     );
     let run_seconds = start.elapsed().as_secs_f64();
+    if history.stopped.is_some() {
+        // A run that ended before its last step (an adaptive run at the steady state, or a
+        // failed solve) did not reach the snapshots asked for after its last completed step:
+        // listed like those past a shortened run's end, not dropped in silence.
+        let last = history.steps.last().map_or(0, |s| s.step);
+        records_past_end.extend(spec.record.iter().copied().filter(|&r| r > last));
+        records_past_end.sort_unstable();
+        records_past_end.dedup();
+    }
     let steady_check = super::steady_check::check(&contact, &integrator, &history);
     Ok(WearRun {
         contact,
@@ -370,6 +406,29 @@ impl WearRun {
         h.windows(2).all(|w| w[0].direction == w[1].direction)
     }
 
+    /// Why `steady_distance.summed_pressure` (the spread of p⁺ + p⁻ over the points in
+    /// contact in both half cycles of the last cycle) means nothing for this run, if it does
+    /// not: monotonic sliding has one half cycle (and no δw either, eq. 40 compares the two),
+    /// and with fewer than two points in contact in both half cycles the spread is 0 whatever
+    /// the state (red-team review 4, F6).
+    pub fn summed_pressure_unavailable(&self) -> Option<String> {
+        if self.is_monotonic() {
+            return Some(
+                "monotonic sliding has one half cycle per period: no p⁺ + p⁻ and no δw".into(),
+            );
+        }
+        let h = &self.history;
+        let both = h
+            .p_plus
+            .iter()
+            .zip(&h.p_minus)
+            .filter(|(a, b)| **a > 0.0 && **b > 0.0)
+            .count();
+        (both < 2).then(|| {
+            format!("{both} contact point(s) carry pressure in both half cycles of the last cycle: no spread of p⁺ + p⁻ to measure")
+        })
+    }
+
     /// The edge ends in contact in the last cycle of the run (either half cycle).
     pub fn edge_ends(&self) -> Vec<crate::contact::EdgeEnd> {
         self.contact
@@ -386,7 +445,7 @@ impl WearRun {
             .map(|s| {
                 let probes: serde_json::Map<String, Value> = self.probes.iter().zip(&s.probes).map(|((n, _), v)| (n.clone(), number(*v))).collect();
                 {
-                    let mut step = json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "k": s.k, "iterations": s.iterations, "criterion": number(s.criterion), "dissipation": number(s.dissipation), "delta_w": number(s.delta_w), "probes": probes });
+                    let mut step = json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "k": s.k, "iterations": s.iterations, "solves": s.solves, "criterion": number(s.criterion), "dissipation": number(s.dissipation), "delta_w": number(s.delta_w), "probes": probes });
                     if monotonic {
                         // δw compares the two half cycles of a period: none in one direction.
                         step.as_object_mut().map(|o| o.remove("delta_w"));
@@ -404,6 +463,7 @@ impl WearRun {
         let half_periods = h.steps.last().map_or(0, |s| s.half_period);
         let mut summary = json!({
             "title": problem.spec.title,
+            "wearfem_version": crate::VERSION,
             "points": self.contact.len(),
             "steps": steps,
             "final": {
@@ -452,6 +512,17 @@ impl WearRun {
                     "delta_w": number(d.delta_w),
                     "summed_pressure": number(d.summed_pressure),
                 });
+                if let Some(why) = self.summed_pressure_unavailable() {
+                    // Both compare the two half cycles of a period; a spread over fewer than
+                    // two points is 0 whatever the state. Null, not a number that reads as
+                    // "steady".
+                    let sd = &mut summary["steady_distance"];
+                    sd["summed_pressure"] = Value::Null;
+                    sd["summed_pressure_note"] = json!(why);
+                    if monotonic {
+                        sd["delta_w"] = Value::Null;
+                    }
+                }
                 summary["steady_check"] = check;
                 summary["steady_reached"] = json!(self.steady_check.reached(h));
             }
@@ -509,6 +580,7 @@ pub fn steady(
 
 /// The periodic steady state of `problem` by one of the paper's §6 methods or the exact one
 /// ([`crate::paper_steady`]), with the condensed contact problem and the set-up time (s).
+/// A §6 result that fails [`crate::paper_steady::accept`] has status `NotSteady`.
 pub fn steady_by(
     problem: &Problem,
     method: crate::paper_steady::SteadyMethod,
@@ -532,6 +604,23 @@ pub fn steady_by(
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
     let setup = start.elapsed().as_secs_f64();
+    let most = crate::spline_method::max_refinement(contact.len());
+    if method == crate::paper_steady::SteadyMethod::Spline && settings.spline_refinement > most {
+        // The library caps it (a spline with more points than the contact has cannot be
+        // determined); asked for explicitly, the cap would go unnoticed.
+        return Err(ProblemError {
+            file: problem.file.clone(),
+            key: "--spline-refinement".into(),
+            message: format!(
+                "{} asks for {} spline points, more than the {} contact points determine; the largest allowed value is {most} ({} spline points)",
+                settings.spline_refinement,
+                (16u64 << settings.spline_refinement.min(40)) + 1,
+                contact.len(),
+                (16usize << most) + 1
+            ),
+        }
+        .into());
+    }
     let outcome = crate::paper_steady::solve_steady(
         &contact,
         &integrator.half_period_wear(),
@@ -567,6 +656,12 @@ pub fn steady_by(
         }) {
             outcome.distance_from_exact =
                 super::steady_check::pressure_distance(&outcome.state, exact);
+        }
+        // A result that fails the acceptance rule is not a steady state: its status says so,
+        // and callers write none of its values.
+        outcome.not_steady = crate::paper_steady::accept(&outcome, settings.tolerance);
+        if outcome.not_steady.is_some() {
+            outcome.state.status = crate::steady::SteadyStatus::NotSteady;
         }
     }
     Ok((outcome, contact, setup))

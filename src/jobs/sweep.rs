@@ -106,48 +106,84 @@ pub struct Variant {
 }
 
 /// The figures of one solved variant.
+///
+/// A variant that did not converge has no figures: `values` is `None`, so that nothing from a
+/// failed or non-converged solve can be written or returned as a result (its row keeps the
+/// overrides, `status` and `seconds`, its value cells are empty).
 #[derive(Clone, Debug)]
 pub struct Outcome {
-    /// "solved", or what went wrong ("not converged (…)", "failed solves: …").
+    /// "solved", or what went wrong ("not converged (…)", "failed solves …, stopped at step …").
     pub status: String,
-    /// Whether the computation converged (the figures are trustworthy).
+    /// Whether the computation converged; `values` is `Some` exactly when it did.
     pub converged: bool,
-    /// x of the contact points, mm.
+    /// x of the contact points, mm (the geometry, known whether or not the solve converged).
     pub x: Vec<f64>,
-    /// '+' half-cycle pressure (monotonic: the pressure), MPa.
+    /// Whether the sliding is reciprocating (a '−' half cycle exists), from the problem.
+    pub reciprocating: bool,
+    /// Probe names and their contact point indices.
+    pub probes: Vec<(String, usize)>,
+    /// Names of the plate unknowns whose rigid wear per period a steady variant reports
+    /// (`lambda_F`, `lambda_M`); empty for a wear run.
+    pub rigid_names: Vec<String>,
+    /// The figures; `None` when the variant did not converge.
+    pub values: Option<Values>,
+    /// Wall-clock seconds of this variant (set-up included).
+    pub seconds: f64,
+}
+
+/// The figures of a converged variant.
+#[derive(Clone, Debug)]
+pub struct Values {
+    /// '+' half-cycle pressure (monotonic: the pressure), MPa, one per contact point.
     pub p_plus: Vec<f64>,
     /// '−' half-cycle pressure, MPa; `None` for monotonic sliding.
     pub p_minus: Option<Vec<f64>>,
     /// Worn shape (wear gap), mm.
     pub shape: Vec<f64>,
-    /// Probe names and their contact point indices.
-    pub probes: Vec<(String, usize)>,
-    /// Rigid wear per period by plate unknown (`lambda_F` mm, `lambda_M` rad); steady only.
-    pub rigid_wear_per_period: Option<Vec<(String, f64)>>,
-    /// Wall-clock seconds of this variant (set-up included).
-    pub seconds: f64,
+    /// Rigid wear per period by plate unknown, in the order of `Outcome::rigid_names`
+    /// (`lambda_F` mm, `lambda_M` rad); steady only.
+    pub rigid_wear_per_period: Option<Vec<f64>>,
 }
 
 impl Outcome {
-    /// Largest '+' pressure, MPa.
-    pub fn peak_p_plus(&self) -> f64 {
-        peak(&self.p_plus)
+    /// Largest '+' pressure, MPa; `None` without values.
+    pub fn peak_p_plus(&self) -> Option<f64> {
+        self.values.as_ref().map(|v| peak(&v.p_plus))
     }
 
-    /// Largest '−' pressure, MPa (reciprocating only).
+    /// Largest '−' pressure, MPa (reciprocating only); `None` without values.
     pub fn peak_p_minus(&self) -> Option<f64> {
-        self.p_minus.as_deref().map(peak)
+        self.values.as_ref()?.p_minus.as_deref().map(peak)
     }
 
-    /// max − min of the shape over the contact points, mm.
-    pub fn shape_range(&self) -> f64 {
-        let (lo, hi) = self
+    /// max − min of the shape over the contact points, mm; `None` without values.
+    pub fn shape_range(&self) -> Option<f64> {
+        let v = self.values.as_ref()?;
+        let (lo, hi) = v
             .shape
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &s| {
                 (a.min(s), b.max(s))
             });
-        hi - lo
+        Some(hi - lo)
+    }
+
+    /// '+' pressure at probe `name`, MPa; `None` without values or without that probe.
+    pub fn probe_p_plus(&self, name: &str) -> Option<f64> {
+        let i = self.probes.iter().find(|p| p.0 == name)?.1;
+        Some(self.values.as_ref()?.p_plus[i])
+    }
+
+    /// '−' pressure at probe `name`, MPa; `None` without values, probe or '−' half cycle.
+    pub fn probe_p_minus(&self, name: &str) -> Option<f64> {
+        let i = self.probes.iter().find(|p| p.0 == name)?.1;
+        Some(self.values.as_ref()?.p_minus.as_ref()?[i])
+    }
+
+    /// Rigid wear per period of plate unknown `name` (mm or rad); `None` without values.
+    pub fn rigid_wear(&self, name: &str) -> Option<f64> {
+        let k = self.rigid_names.iter().position(|n| n == name)?;
+        Some(self.values.as_ref()?.rigid_wear_per_period.as_ref()?[k])
     }
 }
 
@@ -156,12 +192,20 @@ fn peak(p: &[f64]) -> f64 {
 }
 
 /// Solve one variant with `job`.
+///
+/// Only a converged variant carries figures ([`Outcome::values`]). A steady variant whose
+/// iteration did not converge keeps nothing of its last iterate. A wear run converges when
+/// every step solved and met its tolerance and at least one full cycle completed; otherwise
+/// its row has no figures at all, not even those of the steps before a failure (a profile of
+/// an earlier cycle is not the result of the run asked for), and `status` says what went
+/// wrong and at which step the run stopped.
 pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
     let start = Instant::now();
     let outcome = match job {
         Job::Steady => {
             let (state, contact, _) = driver::steady(problem)?;
             let converged = state.status == crate::steady::SteadyStatus::Solved;
+            let reciprocating = state.sliding == crate::steady::SteadySliding::Reciprocating;
             Outcome {
                 status: if converged {
                     "solved".into()
@@ -173,18 +217,15 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
                 },
                 converged,
                 x: contact.points.x.iter().map(|p| p[0]).collect(),
-                p_minus: (!state.p_minus.is_empty()).then(|| state.p_minus.clone()),
-                p_plus: state.p_plus,
-                shape: state.shape,
+                reciprocating,
                 probes: driver::contact_probes(problem, &contact),
-                rigid_wear_per_period: Some(
-                    contact
-                        .rigid_names
-                        .iter()
-                        .zip(&state.rigid_wear)
-                        .map(|(n, v)| (n.to_string(), *v))
-                        .collect(),
-                ),
+                rigid_names: contact.rigid_names.iter().map(|n| n.to_string()).collect(),
+                values: converged.then(|| Values {
+                    p_minus: reciprocating.then(|| state.p_minus.clone()),
+                    p_plus: state.p_plus,
+                    shape: state.shape,
+                    rigid_wear_per_period: Some(state.rigid_wear),
+                }),
                 seconds: 0.0,
             }
         }
@@ -195,32 +236,49 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
                 .stopped
                 .as_ref()
                 .filter(|(_, reason)| *reason != crate::wear::StopReason::SteadyState);
+            let no_cycle = h.steady_distance.is_none();
             let converged = h.failed_solves == 0
                 && h.unconverged_steps == 0
                 && h.oscillating_steps == 0
                 && stopped_early.is_none()
-                && h.steady_distance.is_some();
-            let monotonic = h.steps.iter().all(|s| s.direction == "+");
+                && !no_cycle;
+            let reciprocating = problem
+                .spec
+                .wear
+                .as_ref()
+                .is_some_and(|w| w.sliding != "monotonic");
+            let mut problems = Vec::new();
+            if h.failed_solves > 0 {
+                problems.push(format!("failed solves {}", h.failed_solves));
+            }
+            if h.unconverged_steps > 0 {
+                problems.push(format!("unconverged steps {}", h.unconverged_steps));
+            }
+            if h.oscillating_steps > 0 {
+                problems.push(format!("oscillating steps {}", h.oscillating_steps));
+            }
+            if let Some((s, reason)) = stopped_early {
+                problems.push(format!("stopped at step {s}: {reason}"));
+            } else if no_cycle {
+                problems.push("no full cycle completed".into());
+            }
             Outcome {
                 status: if converged {
                     "solved".into()
                 } else {
-                    format!(
-                        "failed solves {}, unconverged steps {}{}",
-                        h.failed_solves,
-                        h.unconverged_steps,
-                        stopped_early.map_or(String::new(), |(s, reason)| format!(
-                            ", stopped at step {s}: {reason}"
-                        ))
-                    )
+                    problems.join(", ")
                 },
                 converged,
                 x: run.contact.points.x.iter().map(|p| p[0]).collect(),
-                p_plus: h.p_plus.clone(),
-                p_minus: (!monotonic).then(|| h.p_minus.clone()),
-                shape: h.shape.clone(),
+                reciprocating,
                 probes: run.probes.clone(),
-                rigid_wear_per_period: None,
+                rigid_names: Vec::new(),
+                values: converged.then(|| Values {
+                    p_plus: h.p_plus.clone(),
+                    p_minus: reciprocating.then(|| h.p_minus.clone()),
+                    shape: h.shape.clone(),
+                    rigid_wear_per_period: None,
+                }),
                 seconds: 0.0,
             }
         }

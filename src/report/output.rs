@@ -179,6 +179,7 @@ pub fn write_wear(
         "direction",
         "k",
         "iterations",
+        "solves",
         "criterion_percent",
         "dissipation_Nmm",
         "delta_w_mm",
@@ -202,6 +203,7 @@ pub fn write_wear(
                 json!(s.direction),
                 json!(s.k),
                 json!(s.iterations),
+                json!(s.solves),
                 number(s.criterion),
                 number(s.dissipation),
             ];
@@ -302,6 +304,7 @@ pub fn steady_summary(
     };
     let summary = json!({
         "title": problem.spec.title,
+        "wearfem_version": crate::VERSION,
         "status": format!("{:?}", state.status),
         "sliding": match state.sliding {
             crate::steady::SteadySliding::Reciprocating => "reciprocating".to_string(),

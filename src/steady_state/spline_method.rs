@@ -190,6 +190,16 @@ fn zone_residual(
     ))
 }
 
+/// The largest `MethodSettings::spline_refinement` r that `points` contact points determine:
+/// no more spline points (16 · 2^r + 1) than contact points, and r ≤ 16 in any case (memory);
+/// 0 when even the paper's 17 points are more (the paper's spline is used regardless).
+pub fn max_refinement(points: usize) -> u32 {
+    (0..=16u32)
+        .rev()
+        .find(|&r| (16usize << r) < points)
+        .unwrap_or(0)
+}
+
 /// The spline method from the averaged shape; returns the shape at the contact points, the
 /// history (m = 1 … 7 of the polynomial iteration, then the Newton steps) and whether it
 /// ended: the eq. 49 residual at the tolerance, or a stationary point of the least squares
@@ -202,10 +212,7 @@ pub(crate) fn spline(
     let xs: Vec<f64> = problem.contact.points.x.iter().map(|p| p[0]).collect();
     // More spline points than contact points cannot be determined by δw at the points (and a
     // large refinement would exhaust memory): cap the refinement at the contact's resolution.
-    let refinement = (0..=settings.spline_refinement.min(16))
-        .rev()
-        .find(|&r| (16usize << r) < xs.len())
-        .unwrap_or(0);
+    let refinement = settings.spline_refinement.min(max_refinement(xs.len()));
     let sp = Spline::new(&xs, refinement);
     let (last, mid_knot) = (sp.knots.len() - 1, sp.knots.len() / 2);
     let free: Vec<usize> = (0..sp.knots.len()).filter(|&k| k != mid_knot).collect();

@@ -73,6 +73,10 @@ pub enum SteadyStatus {
     MaxIterations,
     /// A linear system was singular; the last iterate is kept.
     Singular,
+    /// One of the paper's §6 methods ended, but its result fails the acceptance rule of
+    /// [`crate::paper_steady::accept`]: its eq. 49 residual is too large for a steady state,
+    /// or nothing (no exact steady state) confirms it. Not a result.
+    NotSteady,
 }
 
 /// The steady (periodic) worn state.

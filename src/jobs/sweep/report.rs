@@ -15,7 +15,8 @@ fn text_cell(s: &str) -> Value {
     }
 }
 
-/// Column names of `sweep.csv` for these outcomes.
+/// Column names of `sweep.csv` for these outcomes (taken from the problem and the contact,
+/// which every variant has whether or not it converged).
 fn columns(variants: &[Variant], outcomes: &[Outcome]) -> Columns {
     let first = &outcomes[0];
     Columns {
@@ -24,13 +25,9 @@ fn columns(variants: &[Variant], outcomes: &[Outcome]) -> Columns {
             .iter()
             .map(|o| o.key.clone())
             .collect(),
-        reciprocating: outcomes.iter().any(|o| o.p_minus.is_some()),
+        reciprocating: outcomes.iter().any(|o| o.reciprocating),
         probes: first.probes.iter().map(|p| p.0.clone()).collect(),
-        rigid: first
-            .rigid_wear_per_period
-            .as_ref()
-            .map(|r| r.iter().map(|(n, _)| n.clone()).collect())
-            .unwrap_or_default(),
+        rigid: first.rigid_names.clone(),
     }
 }
 
@@ -71,28 +68,23 @@ impl Columns {
             .map(|o| text_cell(&o.value_text()))
             .collect();
         r.push(text_cell(&o.status));
-        r.push(number(o.peak_p_plus()));
-        let blank = || Value::String(String::new());
+        // A variant without values (not converged) gets empty cells: nothing of a failed
+        // solve is a result.
+        let cell = |v: Option<f64>| v.map_or_else(|| Value::String(String::new()), number);
+        r.push(cell(o.peak_p_plus()));
         if self.reciprocating {
-            r.push(o.peak_p_minus().map_or_else(blank, number));
+            r.push(cell(o.peak_p_minus()));
         }
         for name in &self.probes {
-            let at = o.probes.iter().find(|p| &p.0 == name).map(|p| p.1);
-            r.push(at.map_or_else(blank, |i| number(o.p_plus[i])));
+            r.push(cell(o.probe_p_plus(name)));
             if self.reciprocating {
-                let minus = at.zip(o.p_minus.as_ref()).map(|(i, m)| m[i]);
-                r.push(minus.map_or_else(blank, number));
+                r.push(cell(o.probe_p_minus(name)));
             }
         }
         for name in &self.rigid {
-            let value = o
-                .rigid_wear_per_period
-                .as_ref()
-                .and_then(|r| r.iter().find(|(n, _)| n == name))
-                .map(|(_, v)| *v);
-            r.push(value.map_or_else(blank, number));
+            r.push(cell(o.rigid_wear(name)));
         }
-        r.push(number(o.shape_range()));
+        r.push(cell(o.shape_range()));
         r.push(number(o.seconds));
         r
     }
@@ -116,38 +108,48 @@ pub fn summary(
                 .iter()
                 .map(|o| (o.key.clone(), json!(o.value)))
                 .collect();
-            let probe = |p: &[f64]| -> serde_json::Map<String, Value> {
+            // JSON null for every value of a variant that did not converge.
+            let value = |v: Option<f64>| v.map_or(Value::Null, number);
+            let probes = |f: &dyn Fn(&str) -> Option<f64>| -> serde_json::Map<String, Value> {
                 o.probes
                     .iter()
-                    .map(|(n, i)| (n.clone(), number(p[*i])))
+                    .map(|(n, _)| (n.clone(), value(f(n))))
                     .collect()
             };
+            let values = o.values.as_ref();
             let mut row = json!({
                 "overrides": overrides,
                 "status": o.status,
                 "converged": o.converged,
-                "peak_p_plus": number(o.peak_p_plus()),
-                "probes_p_plus": probe(&o.p_plus),
-                "shape_range": number(o.shape_range()),
+                "peak_p_plus": value(o.peak_p_plus()),
+                "probes_p_plus": probes(&|n| o.probe_p_plus(n)),
+                "shape_range": value(o.shape_range()),
                 "seconds": o.seconds,
                 "x": numbers(&o.x),
-                "p_plus": numbers(&o.p_plus),
-                "shape": numbers(&o.shape),
+                "p_plus": values.map_or(Value::Null, |v| numbers(&v.p_plus)),
+                "shape": values.map_or(Value::Null, |v| numbers(&v.shape)),
             });
-            if let Some(m) = &o.p_minus {
-                row["peak_p_minus"] = number(o.peak_p_minus().unwrap_or(f64::NAN));
-                row["probes_p_minus"] = json!(probe(m));
-                row["p_minus"] = numbers(m);
+            if o.reciprocating {
+                row["peak_p_minus"] = value(o.peak_p_minus());
+                row["probes_p_minus"] = json!(probes(&|n| o.probe_p_minus(n)));
+                row["p_minus"] = values
+                    .and_then(|v| v.p_minus.as_ref())
+                    .map_or(Value::Null, |m| numbers(m));
             }
-            if let Some(r) = &o.rigid_wear_per_period {
-                row["rigid_wear_per_period"] =
-                    Value::Object(r.iter().map(|(n, v)| (n.clone(), number(*v))).collect());
+            if !o.rigid_names.is_empty() {
+                row["rigid_wear_per_period"] = Value::Object(
+                    o.rigid_names
+                        .iter()
+                        .map(|n| (n.clone(), value(o.rigid_wear(n))))
+                        .collect(),
+                );
             }
             row
         })
         .collect();
     json!({
         "title": title,
+        "wearfem_version": crate::VERSION,
         "job": match job { Job::Steady => "steady", Job::Run => "run" },
         "threads": jobs,
         "variants": rows,
@@ -221,8 +223,8 @@ fn plot(
             .collect::<Vec<_>>()
             .join(", ")
     };
-    // A variant that did not converge ends on an iterate far off every scale: it is listed in
-    // the CSV with its status but not drawn.
+    // A variant that did not converge has no values: it is listed in the CSV with its status
+    // and empty cells, and not drawn.
     let drawn: Vec<usize> = (0..outcomes.len())
         .filter(|&k| outcomes[k].converged)
         .collect();
@@ -235,12 +237,11 @@ fn plot(
         ("worn shape (wear gap)", "g (µm)", 1000.0),
     ];
     for (panel, (name, y_label, scale)) in panels.iter().zip(curves) {
-        let value = |o: &&Outcome, i: usize| {
-            if scale == 1.0 {
-                o.p_plus[i]
-            } else {
-                o.shape[i] * scale
-            }
+        // Only converged variants are drawn, and those have values.
+        let value = |o: &&Outcome, i: usize| match &o.values {
+            Some(v) if scale == 1.0 => v.p_plus[i],
+            Some(v) => v.shape[i] * scale,
+            None => f64::NAN,
         };
         let points: Vec<Vec<(f64, f64)>> = outcomes
             .iter()
