@@ -182,3 +182,22 @@ def test_version_stamp_matches_the_command_line(punch, wearfem_bin):
     assert cli == ["wearfem", v], (
         f"{wearfem_bin} was built from another commit than this wheel: rebuild it (cargo build --release)"
     )
+
+
+def test_run_gives_the_wear_apart_from_the_shape():
+    # A crowned punch (contact.initial_shape, R = 20 m about x = 1100, no shift to zero):
+    # shape is the gap's profile (crown plus wear), wear the wear alone; the corner x = 1070,
+    # never in contact in 4 half periods, has no wear and the crown's 22.5 µm of shape.
+    text = wearfem.Problem.builtin("punch-a").to_toml().replace("shape_zero_at = 1100.0", "")
+    problem = wearfem.Problem.from_toml(text).with_overrides(
+        {"contact.initial_shape": {"radius": 20000.0, "center_x": 1100.0},
+         "wear.extrapolation": [{"k": 1}]}
+    )
+    r = problem.run(steps=4)
+    crown = 20000.0 - np.sqrt(20000.0**2 - 30.0**2)
+    assert r.x[0] == 1070.0 and r.p_plus[0] == 0.0 and r.p_minus[0] == 0.0
+    assert r.wear[0] == 0.0
+    assert abs(r.shape[0] - crown) < 1e-9
+    # Elsewhere the two differ by the crown alone (to round-off of the gap's sum).
+    crowns = 20000.0 - np.sqrt(20000.0**2 - (r.x - 1100.0) ** 2)
+    np.testing.assert_allclose(r.shape - r.wear, crowns, rtol=0, atol=1e-12)

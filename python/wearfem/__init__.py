@@ -168,7 +168,8 @@ class RunResult(_Result):
     criterion (%), dissipation (N·mm),
     delta_w (mm, reciprocating only) and ``p_<probe>`` (MPa). Final profiles (None when the
     run did not complete a cycle): ``x`` (mm), ``p_plus``, ``p_minus``, ``p_sum`` (MPa),
-    ``shape`` (mm). Scalars: ``status`` ("solved", or what went wrong), ``converged``,
+    ``shape`` (mm, the gap's profile: initial gap plus wear) and ``wear`` (mm, the wear
+    alone, positive where material was removed). Scalars: ``status`` ("solved", or what went wrong), ``converged``,
     ``steady_reached`` (the last cycle's pressures within 1 % of the peak of the steady
     state of the same problem, or, where none exists, its wear rigid to 1 %),
     ``steady_distance`` (a dict: ``pressure``, that distance relative to the peak, None
@@ -201,6 +202,7 @@ class RunResult(_Result):
         self.p_minus = _array(final["p_minus"]) if final and "p_minus" in final else None
         self.p_sum = _array(final["p_sum"]) if final and "p_sum" in final else None
         self.shape = _array(final["shape"]) if final else None
+        self.wear = _array(final["wear"]) if final else None
         self.solves: int = summary["solves"]
         self.failed_solves: int = summary["failed_solves"]
         self.unconverged_steps: int = summary["unconverged_steps"]

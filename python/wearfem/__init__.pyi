@@ -69,7 +69,8 @@ class RunResult:
     p_plus: Optional[FloatArray]  # MPa
     p_minus: Optional[FloatArray]  # MPa
     p_sum: Optional[FloatArray]  # MPa
-    shape: Optional[FloatArray]  # mm
+    shape: Optional[FloatArray]  # mm, initial gap plus wear
+    wear: Optional[FloatArray]  # mm, the wear alone
     status: str
     converged: bool
     steady_reached: Optional[bool]
