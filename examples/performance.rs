@@ -3,6 +3,10 @@
 //! `cargo bench` (benches/setup.rs, contact.rs, wear.rs); this prints what the benchmarks cannot: problem sizes, solves
 //! and iterations per step.)
 
+// The allocator of the `wearfem` binary (src/main.rs), so that the figures are the command's.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use std::time::Instant;
 use wearfem::complementarity::{ContactSolver, Method};
 use wearfem::contact::CondensedContact;

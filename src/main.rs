@@ -1,6 +1,11 @@
 //! `wearfem`: the command line. Every job is a library call ([`wearfem::driver`]); this file
 //! only reads arguments, loads the problem and writes the results.
 
+/// Large dense buffers (factors of 2 MB and more) are allocated and freed many times; glibc's
+/// malloc hands each back to the operating system and faults it in again, mimalloc reuses them.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use clap::{Parser, Subcommand};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
