@@ -236,27 +236,28 @@ pub(crate) fn steady_by(
         // Nothing from a failed solve is written as a result.
         return Err(Failure::Compute(format!("the {} method did not converge in {} iterations ({:?}, eq. 49 residual {:.3e}); nothing was written", method.name(), outcome.state.iterations, outcome.state.status, outcome.residual)));
     }
-    wearfem::output::write_steady_method(out, p, &contact, &outcome, setup)?;
-    if vtk {
-        wearfem::vtk::write_steady(out, p, &outcome.state)?;
-    }
     let state = &outcome.state;
-    for w in driver::zone_warnings(p, &contact, &[&state.p_plus, &state.p_minus]) {
-        eprintln!("{w}");
-    }
+    let mut warnings = driver::zone_warnings(p, &contact, &[&state.p_plus, &state.p_minus]);
     match outcome.distance_from_exact {
-        Some(d) if d > wearfem::steady_check::STEADY_PRESSURE_LIMIT => eprintln!(
+        Some(d) if d > wearfem::steady_check::STEADY_PRESSURE_LIMIT => warnings.push(format!(
             "warning: {}: the {} method's pressures are {:.2} % of the peak from the exact steady state (`--method exact`): the paper's §6 methods approximate it (docs/validation.md)",
             p.file,
             method.name(),
             100.0 * d
-        ),
+        )),
         Some(_) => {}
         None => eprintln!(
             "note: {}: the exact steady state could not be computed to compare the {} method with",
             p.file,
             method.name()
         ),
+    }
+    wearfem::output::write_steady_method(out, p, &contact, &outcome, setup, &warnings)?;
+    if vtk {
+        wearfem::vtk::write_steady(out, p, &outcome.state)?;
+    }
+    for w in &warnings {
+        eprintln!("{w}");
     }
     let last = outcome.history.last();
     println!(

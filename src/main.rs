@@ -379,16 +379,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 }
                 None => println!("no full cycle completed: no final profiles written"),
             }
-            if let Some(w) = driver::penalty_warning(&p, &result.contact) {
-                eprintln!("{w}");
-            }
-            for w in driver::model_warnings(&p, &result.contact) {
-                eprintln!("{w}");
-            }
-            for w in wearfem::validity::run_warnings(&p, &result) {
-                eprintln!("{w}");
-            }
-            for w in driver::zone_warnings(&p, &result.contact, &[&h.p_plus, &h.p_minus]) {
+            for w in result.warnings(&p) {
                 eprintln!("{w}");
             }
             match &h.stopped {
@@ -445,7 +436,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 };
                 return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written. {hint}: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }
-            wearfem::output::write_steady(&out, &p, &contact, &state, seconds)?;
+            let warnings = driver::steady_warnings(&p, &contact, &state);
+            wearfem::output::write_steady(&out, &p, &contact, &state, seconds, &warnings)?;
             if wants_vtk(vtk, &p) {
                 wearfem::vtk::write_steady(&out, &p, &state)?;
             }
@@ -467,13 +459,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 probes.join(", "),
                 out.display()
             );
-            for w in driver::model_warnings(&p, &contact) {
-                eprintln!("{w}");
-            }
-            for w in wearfem::validity::steady_warnings(&p, &contact, &state) {
-                eprintln!("{w}");
-            }
-            for w in driver::zone_warnings(&p, &contact, &[&state.p_plus, &state.p_minus]) {
+            for w in &warnings {
                 eprintln!("{w}");
             }
         }

@@ -35,10 +35,10 @@ fn shipped_examples_are_inside_the_model() {
     for name in ["punch-a", "punch-b40", "punch-b40-variant2", "brake", "pin"] {
         let p = builtin(name, &[]);
         let (state, contact, _) = driver::steady(&p).unwrap();
-        let w = validity::steady_warnings(&p, &contact, &state);
+        let w = validity::steady_checks(&p, &contact, &state);
         assert!(w.is_empty(), "{name} steady: {w:?}");
         let run = driver::wear(&p, Some(200), |_| {}).unwrap();
-        let w = validity::run_warnings(&p, &run);
+        let w = validity::run_checks(&p, &run);
         assert!(w.is_empty(), "{name} run: {w:?}");
     }
 }
@@ -72,9 +72,22 @@ fn a_steady_state_outside_the_quasi_static_half_period_is_reported() {
     let beta = "wear.body1.beta=3.9269908169872414e-5";
     let steady_problem = problem(&text, &[beta]);
     let (state, contact, _) = driver::steady(&steady_problem).unwrap();
-    let warnings = validity::steady_warnings(&steady_problem, &contact, &state);
+    let warnings = validity::steady_checks(&steady_problem, &contact, &state);
     assert_eq!(warnings.len(), 1, "{warnings:?}");
     assert!(warnings[0].contains("one half period's wear changes the contact pressure"));
+    // The same line is in summary.json (and so in Python's result), with the others.
+    let summary = wearfem::output::steady_summary(
+        &steady_problem,
+        &contact,
+        &state,
+        0.0,
+        &driver::steady_warnings(&steady_problem, &contact, &state),
+    );
+    assert!(summary["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w.as_str().unwrap().contains("one half period's wear")));
     let reference = problem(
         &text,
         &[
@@ -154,7 +167,7 @@ shape_zero_at = 0.0
     let warnings = |sets: &[&str]| {
         let p = problem(base, sets);
         let run = driver::wear(&p, None, |_| {}).unwrap();
-        validity::run_warnings(&p, &run)
+        validity::run_checks(&p, &run)
     };
     assert!(warnings(&[]).is_empty());
     let deep = warnings(&["wear.extrapolation=[{k=1000000}]"]);

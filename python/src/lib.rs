@@ -223,7 +223,13 @@ impl PyProblem {
         let p = &self.problem;
         let out = py.allow_threads(|| {
             driver::steady(p).map(|(state, contact, seconds)| {
-                let mut summary = wearfem::output::steady_summary(p, &contact, &state, seconds);
+                let warnings = if state.status == wearfem::steady::SteadyStatus::Solved {
+                    driver::steady_warnings(p, &contact, &state)
+                } else {
+                    Vec::new()
+                };
+                let mut summary =
+                    wearfem::output::steady_summary(p, &contact, &state, seconds, &warnings);
                 summary["probe_points"] = serde_json::json!(driver::contact_probes(p, &contact));
                 if state.status != wearfem::steady::SteadyStatus::Solved {
                     // The command line writes nothing for an iteration that did not converge;

@@ -201,3 +201,24 @@ def test_run_gives_the_wear_apart_from_the_shape():
     # Elsewhere the two differ by the crown alone (to round-off of the gap's sum).
     crowns = 20000.0 - np.sqrt(20000.0**2 - (r.x - 1100.0) ** 2)
     np.testing.assert_allclose(r.shape - r.wear, crowns, rtol=0, atol=1e-12)
+
+
+def test_warnings_reach_python():
+    # punch-b40 with β̃ × 1000: one half period's wear moves the pressure by 60 % of its
+    # peak, outside the half-period scheme (docs/validation.md); the command line warns, and
+    # so does Python, through warnings.warn and the result's list.
+    import warnings
+
+    problem = wearfem.Problem.builtin("punch-b40").with_overrides(
+        {"wear.body1.beta": 3.9269908169872414e-5}
+    )
+    with pytest.warns(wearfem.WearfemWarning, match="one half period's wear changes"):
+        steady = problem.steady()
+    assert any("one half period" in w for w in steady.warnings)
+    assert steady.summary["warnings"] == steady.warnings
+    # The shipped example has none: no false alarm.
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", wearfem.WearfemWarning)
+        quiet = wearfem.Problem.builtin("punch-b40").steady()
+        run = wearfem.Problem.builtin("punch-b40").run(steps=100)
+    assert quiet.warnings == [] and run.warnings == []

@@ -16,6 +16,7 @@ Units everywhere: mm, N, MPa (N/mm²), s; rigid wear per period: ``lambda_F`` in
 from __future__ import annotations
 
 import json
+import warnings as _warnings
 from typing import Any, Callable, Dict, Mapping, Optional
 
 import numpy as np
@@ -26,6 +27,7 @@ from ._wearfem import __version__
 __all__ = [
     "Problem",
     "WearfemError",
+    "WearfemWarning",
     "ProblemError",
     "ElasticResult",
     "ContactResult",
@@ -62,12 +64,25 @@ def _array(values) -> np.ndarray:
     return np.array([np.nan if v is None else v for v in values], dtype=float)
 
 
+class WearfemWarning(UserWarning):
+    """A result that may be wrong by more than its solver's tolerance: the command line's
+    warning lines (a coarse mesh at a contact zone's end, a model assumption that does not
+    hold, ...), issued with :func:`warnings.warn` when a result is made and kept in its
+    ``warnings`` list. ``warnings.simplefilter("error", wearfem.WearfemWarning)`` turns them
+    into exceptions."""
+
+
 class _Result:
     """Common part of the results: the summary dict and attribute access to its scalars."""
 
     def __init__(self, summary: Dict[str, Any]):
         #: The command line's summary.json, as a dict (lists not converted).
         self.summary = summary
+        #: The command line's warning lines for this result (summary.json ``warnings``).
+        self.warnings = list(summary.get("warnings", []))
+        for text in self.warnings:
+            # Results are made inside Problem.steady()/run(): point at the caller's line.
+            _warnings.warn(text, WearfemWarning, stacklevel=4)
 
     def __getitem__(self, key: str) -> Any:
         return self.summary[key]

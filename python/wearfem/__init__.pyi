@@ -20,6 +20,10 @@ class WearfemError(ValueError):
 
 ProblemError = WearfemError
 
+class WearfemWarning(UserWarning):
+    """A result that may be wrong by more than its solver's tolerance (the command line's
+    warning lines), issued when a steady or run result is made."""
+
 class ElasticResult:
     summary: Dict[str, Any]
     status: str
@@ -45,6 +49,7 @@ class ContactResult:
 
 class SteadyResult:
     summary: Dict[str, Any]
+    warnings: List[str]  # the command line's warning lines
     x: FloatArray  # mm
     # The values are None when the solve did not converge (converged False): nothing of the
     # last iterate is a result.
@@ -64,6 +69,7 @@ class SteadyResult:
 
 class RunResult:
     summary: Dict[str, Any]
+    warnings: List[str]  # the command line's warning lines
     history: Dict[str, np.ndarray]  # one entry per step
     x: Optional[FloatArray]  # mm
     p_plus: Optional[FloatArray]  # MPa

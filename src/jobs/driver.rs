@@ -15,7 +15,7 @@ use std::time::Instant;
 
 pub use super::warnings::{
     coarse_zones_json, edge_ends_json, edge_ends_warning, model_warnings, penalty_warning,
-    steady_edge_ends, zone_warnings, STROKE_LIMIT,
+    run_warnings, steady_edge_ends, steady_warnings, zone_warnings, STROKE_LIMIT,
 };
 
 /// Errors of a job: bad input, or a computation that could not be carried out.
@@ -307,6 +307,8 @@ pub struct WearRun {
     pub sliding_per_half_period: f64,
     /// The last cycle against the steady state of the same problem (not in `run_seconds`).
     pub steady_check: super::steady_check::SteadyCheck,
+    /// The run's warnings ([`run_warnings`]), made on first use by [`WearRun::warnings`].
+    warnings: std::sync::OnceLock<Vec<String>>,
 }
 
 /// Run the wear integration of `problem` (optionally overriding the number of steps).
@@ -385,10 +387,17 @@ pub fn wear(
         records_past_end,
         sliding_per_half_period: integrator.sliding_per_half_period(),
         steady_check,
+        warnings: std::sync::OnceLock::new(),
     })
 }
 
 impl WearRun {
+    /// Every warning about this run ([`run_warnings`]; its checks cost a few contact solves,
+    /// made once): the console's warning lines and summary.json's `warnings`.
+    pub fn warnings(&self, problem: &Problem) -> &[String] {
+        self.warnings.get_or_init(|| run_warnings(problem, self))
+    }
+
     /// The wear in `shape` (a shape of this run, mm): `shape` minus the initial gap (the
     /// bodies' geometric gap and `contact.initial_shape`), so 0 where nothing was worn
     /// (after a shift by `wear.shape_zero_at`, relative to the worn depth there), mm.
@@ -481,7 +490,7 @@ impl WearRun {
             "failed_solves": h.failed_solves,
             "unconverged_steps": h.unconverged_steps,
             "oscillating_steps": h.oscillating_steps,
-
+            "warnings": self.warnings(problem),
             "setup_seconds": self.setup_seconds,
             "run_seconds": self.run_seconds,
             "sliding_distance_m": number(half_periods as f64 * self.sliding_per_half_period / 1000.0),

@@ -179,7 +179,7 @@ fn tools(
 
 /// The checks of this module for a finished `wearfem run`: its last cycle's pressures over a
 /// half period, its worn depth and the first solve's displacements.
-pub fn run_warnings(problem: &Problem, run: &crate::driver::WearRun) -> Vec<String> {
+pub fn run_checks(problem: &Problem, run: &crate::driver::WearRun) -> Vec<String> {
     let Some((mut solver, integrator, first)) = tools(problem, &run.contact) else {
         return Vec::new();
     };
@@ -211,7 +211,7 @@ pub fn run_warnings(problem: &Problem, run: &crate::driver::WearRun) -> Vec<Stri
 
 /// The checks of this module for a steady state: its pressures over a half period and the
 /// first solve's displacements.
-pub fn steady_warnings(
+pub fn steady_checks(
     problem: &Problem,
     contact: &CondensedContact,
     state: &crate::steady::SteadyState,

@@ -163,3 +163,35 @@ pub fn penalty_warning(problem: &Problem, contact: &CondensedContact) -> Option<
         )
     })
 }
+
+/// Every warning about a finished run, in the order the console prints them: a soft penalty,
+/// what the model leaves out, the model's own assumptions ([`super::validity`]) and the
+/// contact zones of the last cycle. summary.json lists them as `warnings`.
+pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<String> {
+    let h = &run.history;
+    let mut warnings: Vec<String> = penalty_warning(problem, &run.contact).into_iter().collect();
+    warnings.extend(model_warnings(problem, &run.contact));
+    warnings.extend(super::validity::run_checks(problem, run));
+    warnings.extend(zone_warnings(
+        problem,
+        &run.contact,
+        &[&h.p_plus, &h.p_minus],
+    ));
+    warnings
+}
+
+/// Every warning about a steady state (see [`run_warnings`]).
+pub fn steady_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    state: &crate::steady::SteadyState,
+) -> Vec<String> {
+    let mut warnings = model_warnings(problem, contact);
+    warnings.extend(super::validity::steady_checks(problem, contact, state));
+    warnings.extend(zone_warnings(
+        problem,
+        contact,
+        &[&state.p_plus, &state.p_minus],
+    ));
+    warnings
+}

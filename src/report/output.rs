@@ -295,6 +295,7 @@ pub fn steady_summary(
     contact: &crate::contact::CondensedContact,
     state: &crate::steady::SteadyState,
     seconds: f64,
+    warnings: &[String],
 ) -> Value {
     let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
     let p_minus = (!state.p_minus.is_empty()).then_some(&state.p_minus[..]);
@@ -320,6 +321,7 @@ pub fn steady_summary(
         "rigid_wear_per_period": named(&contact.rigid_names, &state.rigid_wear),
         "edge_ends_in_contact": crate::driver::edge_ends_json(&crate::driver::steady_edge_ends(contact, state)),
         "coarse_partner_zones": crate::driver::coarse_zones_json(&contact.coarse_partner_zones(&[&state.p_plus, &state.p_minus])),
+        "warnings": warnings,
         "seconds": seconds,
     });
     let mut summary = summary;
@@ -340,10 +342,11 @@ pub fn write_steady(
     contact: &crate::contact::CondensedContact,
     state: &crate::steady::SteadyState,
     seconds: f64,
+    warnings: &[String],
 ) -> Result<(), OutputError> {
     let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
     let p_minus = (!state.p_minus.is_empty()).then_some(&state.p_minus[..]);
-    let summary = steady_summary(problem, contact, state, seconds);
+    let summary = steady_summary(problem, contact, state, seconds, warnings);
     write_json(dir, "summary.json", &summary)?;
     Profiles {
         x: &x,
@@ -416,6 +419,7 @@ pub fn write_steady_method(
     contact: &crate::contact::CondensedContact,
     outcome: &crate::paper_steady::MethodOutcome,
     setup_seconds: f64,
+    warnings: &[String],
 ) -> Result<(), OutputError> {
     // `seconds` keeps its meaning of `wearfem steady` before the methods: set-up included.
     write_steady(
@@ -424,6 +428,7 @@ pub fn write_steady_method(
         contact,
         &outcome.state,
         setup_seconds + outcome.seconds,
+        warnings,
     )?;
     let path = dir.join("summary.json");
     let text = fs::read_to_string(&path).map_err(io(&path))?;
