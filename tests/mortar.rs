@@ -725,3 +725,19 @@ fn bodies_of_different_degrees_meet_hertz() {
         assert!(osc < 0.01 * peak, "{case}: oscillation {osc:.3} MPa");
     }
 }
+
+/// Collocation samples body 2's trace at one partner point per contact point: on a trace of
+/// another degree than body 1's the point forces ripple (p₂ = 12 against p₁ = 8: up to 16 %
+/// of the pressure, review of 2026-11-24), so it is refused; mortar takes the same meshes.
+#[test]
+fn collocation_needs_equal_degrees() {
+    let problem = example_hertz(&[
+        "contact.discretisation=collocation".to_string(),
+        "bodies[1].p=12".to_string(),
+    ]);
+    let error = CondensedContact::build(&problem).err().expect("refused");
+    assert_eq!(error.key, "contact.discretisation");
+    assert!(error.message.contains("same degree"), "{}", error.message);
+    let mortar = example_hertz(&["bodies[1].p=12".to_string()]);
+    assert!(CondensedContact::build(&mortar).is_ok());
+}
