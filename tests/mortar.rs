@@ -741,3 +741,21 @@ fn collocation_needs_equal_degrees() {
     let mortar = example_hertz(&["bodies[1].p=12".to_string()]);
     assert!(CondensedContact::build(&mortar).is_ok());
 }
+
+/// A lower degree on body 2 resolves less per element: Hertz with body 2 at p = 1 under
+/// body 1 at p = 8 (the example's meshes) has its peak 9 % above the closed form, and the
+/// zone is reported; at p = 8 on both it is within 0.2 % and is not.
+#[test]
+fn a_lower_degree_on_body_2_is_reported_like_a_coarser_mesh() {
+    let (_, p0) = hertz_closed_form("plane_strain");
+    let low = example_hertz(&["bodies[1].p=1".to_string()]);
+    let (contact, sol) = solve(&low);
+    let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
+    assert!(
+        (peak - p0).abs() > 0.02 * p0,
+        "p2 = 1: peak {peak}, Hertz {p0}"
+    );
+    assert!(!contact.coarse_partner_zones(&[&sol.pressure]).is_empty());
+    let (contact, sol) = solve(&example_hertz(&[]));
+    assert!(contact.coarse_partner_zones(&[&sol.pressure]).is_empty());
+}

@@ -66,6 +66,11 @@ pub struct PointResolution {
     pub partner_line_distance: f64,
     /// Whether the point is an end of one of body 1's elements.
     pub on_element_end: bool,
+    /// max(1, p₁/p₂): body 2's elements count this many times longer in the comparisons, as a
+    /// lower degree resolves less per element (Hertz with p₂ = 1 under p₁ = 8: peak 9 % high,
+    /// review of 2026-11-24). A higher degree on body 2 is not counted as finer: it does not
+    /// follow a pressure corner inside its element (docs/validation.md, Mortar contact).
+    pub partner_degree_ratio: f64,
 }
 
 /// A contact zone that body 2's mesh does not resolve.
@@ -113,6 +118,7 @@ pub(super) fn point_resolution(
     normal: &[Point],
 ) -> Vec<PointResolution> {
     let p = body1.dofs.p;
+    let partner_degree_ratio = (p as f64 / body2.dofs.p as f64).max(1.0);
     let mut element_length = vec![0.0_f64; x.len()];
     for c in chain {
         let h = arc_length(body1, c.element, c.local, -1.0, 1.0);
@@ -138,6 +144,7 @@ pub(super) fn point_resolution(
                         partner_element_length: Some(before + after),
                         partner_line_distance: before.min(after),
                         on_element_end,
+                        partner_degree_ratio,
                     }
                 }
                 None => PointResolution {
@@ -145,6 +152,7 @@ pub(super) fn point_resolution(
                     partner_element_length: None,
                     partner_line_distance: 0.0,
                     on_element_end,
+                    partner_degree_ratio,
                 },
             }
         })
@@ -199,7 +207,7 @@ fn assess(x: &[Point], cells: &[PointResolution], ends: [usize; 2]) -> Option<Co
         .filter_map(|i| {
             let h =
                 0.5 * (cells[i].partner_element_length? + cells[i + 1].partner_element_length?);
-            Some(distance(x[i], x[i + 1]) / h)
+            Some(distance(x[i], x[i + 1]) / (h * cells[i].partner_degree_ratio))
         })
         .sum();
     // An end is inside a coarse partner element when no line of body 2 lies within body 1's
@@ -211,8 +219,8 @@ fn assess(x: &[Point], cells: &[PointResolution], ends: [usize; 2]) -> Option<Co
         let cell = cells[end];
         let h2 = cell.partner_element_length?;
         let spacing = distance(x[end], x[outward.unwrap_or(inward)]);
-        let inside_coarse =
-            h2 > COARSER * cell.element_length && cell.partner_line_distance > spacing;
+        let inside_coarse = h2 * cell.partner_degree_ratio > COARSER * cell.element_length
+            && cell.partner_line_distance > spacing;
         let needed = if outward.is_none() {
             RESOLVED_ACROSS_CORNER
         } else {
@@ -342,6 +350,7 @@ mod tests {
                     partner_element_length: Some(h2),
                     partner_line_distance: offset.min(h2 - offset),
                     on_element_end: false,
+                    partner_degree_ratio: 1.0,
                 }
             })
             .collect();
