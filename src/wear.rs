@@ -181,10 +181,10 @@ pub struct WearHistory {
     /// [`Snapshot::contact_shape`]).
     #[serde(skip)]
     pub contact_shape: Vec<f64>,
-    /// An upper bound of the depth worn off at any contact point, mm: the sum over the steps
-    /// of k times the deepest wear of the step's half period (exact for a uniform wear). It
-    /// counts the wear that `shape_zero_at` shifts out of `shape`.
-    pub worn_depth_bound: f64,
+    /// The largest depth worn off body 1 and off body 2 at any contact point, mm: each
+    /// point's wear summed over the steps (k half periods of the step's pressure each),
+    /// including the wear that `shape_zero_at` shifts out of `shape`.
+    pub worn_depth: [f64; 2],
     /// Total contact solves.
     pub solves: usize,
     /// Steps whose iteration did not meet its tolerance.
@@ -271,6 +271,8 @@ pub struct WearIntegrator {
     pub spec: WearSpec,
     schedule: Vec<ScheduleEntry>,
     laws: Vec<WearLaw>,
+    /// Which body (0: body 1, 1: body 2) each of `laws` wears.
+    law_bodies: Vec<usize>,
     /// Sliding direction of the first (odd) steps; default '+'.
     pub first_direction: Direction,
 }
@@ -281,7 +283,11 @@ impl WearIntegrator {
         let spec = &crate::wear_units::resolve_duration(spec)?;
         let bad = |k: &str, m: String| Err((format!("wear.{k}"), m));
         let mut laws = Vec::new();
-        for (name, law) in [("body1", spec.body1), ("body2", spec.body2)] {
+        let mut law_bodies = Vec::new();
+        for (body, (name, law)) in [("body1", spec.body1), ("body2", spec.body2)]
+            .into_iter()
+            .enumerate()
+        {
             if let Some(l) = law {
                 if !(l.beta.is_finite() && l.beta >= 0.0) {
                     return bad(
@@ -301,6 +307,7 @@ impl WearIntegrator {
                 }
                 if l.beta > 0.0 {
                     laws.push(l);
+                    law_bodies.push(body);
                 }
             }
         }
@@ -439,6 +446,7 @@ impl WearIntegrator {
             spec: spec.clone(),
             schedule,
             laws,
+            law_bodies,
             first_direction: Direction::Plus,
         };
         for (name, law) in [("body1", spec.body1), ("body2", spec.body2)] {

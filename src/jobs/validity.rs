@@ -12,10 +12,11 @@
 //!   change of the pressure that one half period's wear causes, by two contact solves per
 //!   direction.
 //! - *Fixed geometry.* The bodies' meshes are never updated; wear enters only as a gap. A
-//!   worn depth that is not small against body 1 (a run of k = 10⁶ wore 240 mm off a 40 mm
-//!   punch) is outside the model ([`wear_depth_warning`]).
-//! - *Small displacements.* Linear elasticity: a plate displacement that is not small against
-//!   the body (E = 10⁻³ MPa moved the punch 690 m) is outside it ([`displacement_warning`]).
+//!   worn depth that is not small against the worn body's blocks at the contact (a run of
+//!   k = 10⁶ wore 240 mm off a 40 mm punch; a 1 mm pad lost 1.8 mm) is outside the model
+//!   ([`wear_depth_warnings`], for each body by its own wear).
+//! - *Small displacements.* Linear elasticity: a plate motion that is not small against body 1
+//!   (E = 10⁻³ MPa moved the punch 690 m) is outside it ([`displacement_warning`]).
 
 use crate::complementarity::{ContactSolver, Direction, Status};
 use crate::contact::CondensedContact;
@@ -27,9 +28,9 @@ use crate::wear::{WearHistory, WearIntegrator};
 /// the change; 2 % keeps that near the 1 % the steady check asks of a run.
 pub const HALF_PERIOD_CHANGE_LIMIT: f64 = 0.02;
 
-/// Largest worn depth, as a fraction of body 1's extent along the contact normal, and
-/// largest plate displacement (λ_F, and λ_M times the contact edge's length), as a fraction
-/// of the contact edge's length, that pass without a warning.
+/// Largest worn depth of a body, as a fraction of the extent along the contact normal of
+/// the blocks that carry its contact edge; largest plate translation, as a fraction of body
+/// 1's extent along the normal; largest plate rotation, in rad: beyond these a warning.
 pub const GEOMETRY_LIMIT: f64 = 0.1;
 
 /// The largest change of the contact pressure that the wear of one half period (one step
@@ -82,85 +83,120 @@ pub fn half_period_warning(problem: &Problem, change: Option<f64>) -> Option<Str
     ))
 }
 
-/// Body 1's extent along the mean normal of the contact points, mm (None without contact).
-fn body1_depth(problem: &Problem, contact: &CondensedContact) -> Option<f64> {
-    let c = problem.spec.contact.as_ref()?;
-    let body = problem.body_index(&c.body).ok()?;
-    let mesh = problem.mesh(body).ok()?;
-    let normals = &contact.points.normal;
-    let n = normals
+/// The mean normal of the contact points (unit), None without contact points.
+fn mean_normal(contact: &CondensedContact) -> Option<[f64; 2]> {
+    let n = contact
+        .points
+        .normal
         .iter()
         .fold([0.0, 0.0], |s, v| [s[0] + v[0], s[1] + v[1]]);
     let length = n[0].hypot(n[1]);
-    if length == 0.0 {
-        return None;
-    }
-    let along = |p: &[f64; 2]| (p[0] * n[0] + p[1] * n[1]) / length;
-    let (lo, hi) = mesh
-        .vertices
-        .iter()
-        .map(along)
+    (length > 0.0).then(|| [n[0] / length, n[1] / length])
+}
+
+/// Extent along `normal` of `points`, mm.
+fn extent(points: impl Iterator<Item = [f64; 2]>, normal: [f64; 2]) -> f64 {
+    let (lo, hi) = points
+        .map(|p| p[0] * normal[0] + p[1] * normal[1])
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
             (lo.min(v), hi.max(v))
         });
-    Some(hi - lo)
+    hi - lo
 }
 
-/// A warning when the run may have worn body 1 by more than [`GEOMETRY_LIMIT`] of its extent
-/// along the contact normal. The depth is bounded by the sum over the steps of k times the
-/// deepest wear of the step (exact for a uniform wear, as near the steady state).
-pub fn wear_depth_warning(
+/// For body `which` (0: body 1, 1: body 2) of the contact: its name, and the extent along the
+/// contact normal of the blocks that carry its contact edge, mm (a pad modelled as a block
+/// of its own is measured by itself, not by the whole body).
+fn worn_blocks_depth(
+    problem: &Problem,
+    contact: &CondensedContact,
+    which: usize,
+) -> Option<(String, f64)> {
+    let c = problem.spec.contact.as_ref()?;
+    let (name, edge) = if which == 0 {
+        (&c.body, &c.edge)
+    } else {
+        (&c.target_body, &c.target_edge)
+    };
+    let mesh = problem.mesh(problem.body_index(name).ok()?).ok()?;
+    let mut blocks: Vec<usize> = mesh
+        .named_edges
+        .get(edge)?
+        .iter()
+        .map(|&(e, _)| mesh.elements[e].block)
+        .collect();
+    blocks.sort_unstable();
+    blocks.dedup();
+    let normal = mean_normal(contact)?;
+    let corners = blocks
+        .iter()
+        .flat_map(|&b| mesh.blocks[b].block.corners.iter().copied());
+    Some((name.clone(), extent(corners, normal)))
+}
+
+/// A warning for each body whose worn depth ([`WearHistory::worn_depth`]) exceeds
+/// [`GEOMETRY_LIMIT`] of the extent, along the contact normal, of the blocks that carry its
+/// contact edge: the meshes are never updated, so such wear is outside the model.
+pub fn wear_depth_warnings(
     problem: &Problem,
     contact: &CondensedContact,
     history: &WearHistory,
-) -> Option<String> {
-    let depth = history.worn_depth_bound;
-    let extent = body1_depth(problem, contact)?;
-    (depth > GEOMETRY_LIMIT * extent).then(|| format!(
-        "warning: {}: the run wore up to {:.4e} mm off the contact ({} body 1's {:.4} mm along the contact normal); the bodies' geometry is never updated (wear enters as a gap only), so a worn depth that is not small against the body is outside the model. Shorten the run or check the wear coefficient",
-        problem.file,
-        depth,
-        share(depth / extent),
-        extent
-    ))
+) -> Vec<String> {
+    (0..2)
+        .filter(|&b| history.worn_depth[b] > 0.0)
+        .filter_map(|b| {
+            let depth = history.worn_depth[b];
+            let (name, size) = worn_blocks_depth(problem, contact, b)?;
+            (depth > GEOMETRY_LIMIT * size).then(|| format!(
+                "warning: {}: the run wore up to {:.4e} mm off body {} (\"{name}\"), {} the {:.4} mm of the blocks that carry its contact edge (along the contact normal); the meshes are never updated (wear enters as a gap only), so a worn depth that is not small against them is outside the model: a pad worn through still counts with its stiffness. Shorten the run or check the wear coefficient",
+                problem.file,
+                depth,
+                b + 1,
+                share(depth / size),
+                size
+            ))
+        })
+        .collect()
 }
 
-/// A warning when the first contact solve's plate displacement is not small against the
-/// contact edge (linear elasticity assumes small displacements): |λ_F|, or |λ_M| times the
-/// edge's length, above [`GEOMETRY_LIMIT`] of that length.
+/// A warning when the first contact solve's plate motion is not small: a translation λ_F
+/// above [`GEOMETRY_LIMIT`] of body 1's extent along the contact normal, or a rotation λ_M
+/// above [`GEOMETRY_LIMIT`] rad. Linear elasticity assumes small displacements and
+/// rotations; a long body may move far at a small strain, hence the body's own size.
 pub fn displacement_warning(
     problem: &Problem,
     contact: &CondensedContact,
     solver: &mut ContactSolver,
     direction: Direction,
 ) -> Option<String> {
-    let x = &contact.points.x;
-    let length: f64 = x
-        .windows(2)
-        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
-        .sum();
+    let c = problem.spec.contact.as_ref()?;
+    let mesh = problem.mesh(problem.body_index(&c.body).ok()?).ok()?;
+    let size = extent(mesh.vertices.iter().copied(), mean_normal(contact)?);
     let (solution, info) = solver.solve(&contact.points.initial_gap, direction);
-    if info.status != Status::Solved || length <= 0.0 {
+    if info.status != Status::Solved || size <= 0.0 {
         return None;
     }
-    let largest = contact
-        .rigid_names
-        .iter()
-        .zip(&solution.rigid)
-        .map(|(name, v)| {
-            if *name == "lambda_M" {
-                v.abs() * length
-            } else {
-                v.abs()
-            }
-        })
-        .fold(0.0, f64::max);
-    (largest > GEOMETRY_LIMIT * length).then(|| format!(
-        "warning: {}: the plate moves by {:.4e} mm under the load ({} the contact edge's {:.4} mm); linear elasticity assumes displacements small against the bodies, so these results are outside its range. Check the Young's moduli and the load (units: MPa and mm)",
-        problem.file,
-        largest,
-        share(largest / length),
-        length
+    let rigid = |name: &str| {
+        contact
+            .rigid_names
+            .iter()
+            .position(|n| *n == name)
+            .map_or(0.0, |i| solution.rigid[i].abs())
+    };
+    let (translation, rotation) = (rigid("lambda_F"), rigid("lambda_M"));
+    let what = if translation > GEOMETRY_LIMIT * size {
+        format!(
+            "moves by {translation:.4e} mm, {} body 1's {size:.4} mm along the contact normal,",
+            share(translation / size)
+        )
+    } else if rotation > GEOMETRY_LIMIT {
+        format!("turns by {rotation:.4e} rad,")
+    } else {
+        return None;
+    };
+    Some(format!(
+        "warning: {}: under the load the plate {what} but linear elasticity assumes small displacements and rotations, so these results are outside its range. Check the Young's moduli and the load (units: MPa and mm)",
+        problem.file
     ))
 }
 
@@ -199,7 +235,7 @@ pub fn run_checks(problem: &Problem, run: &crate::driver::WearRun) -> Vec<String
         let change = half_period_pressure_change(&mut solver, &integrator, &h.shape, &pressures);
         warnings.extend(half_period_warning(problem, change));
     }
-    warnings.extend(wear_depth_warning(problem, &run.contact, h));
+    warnings.extend(wear_depth_warnings(problem, &run.contact, h));
     warnings.extend(displacement_warning(
         problem,
         &run.contact,

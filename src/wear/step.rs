@@ -46,7 +46,7 @@ impl WearIntegrator {
             p_minus: vec![0.0; n],
             shape: vec![],
             contact_shape: vec![],
-            worn_depth_bound: 0.0,
+            worn_depth: [0.0; 2],
             solves: 0,
             unconverged_steps: 0,
             oscillating_steps: 0,
@@ -65,6 +65,8 @@ impl WearIntegrator {
             (method == Some(AdaptiveMethod::StepDoubling)).then(|| StepDoubling::new(&ws));
         let mut bdf2 = (method == Some(AdaptiveMethod::Bdf2)).then(|| Bdf2::new(monotonic));
         let mut half_periods = 0;
+        // Each body's wear at each point so far, mm (for `worn_depth`).
+        let mut worn = [vec![0.0; n], vec![0.0; n]];
         // The shape reported for the last completed step, and the gap its pressure solved.
         let mut written = shape.clone();
         let mut contact_shape = shape.clone();
@@ -138,7 +140,7 @@ impl WearIntegrator {
             hist.unconverged_steps += usize::from(!outcome.converged);
             hist.oscillating_steps += usize::from(outcome.oscillating);
             half_periods += k;
-            hist.worn_depth_bound += k as f64 * ws.increment.iter().cloned().fold(0.0, f64::max);
+            self.accumulate_wear(&ws.solution.pressure, &ws.sliding, k as f64, &mut worn);
             ws.last_shape.copy_from_slice(&shape);
             for ((c, g), a) in contact_shape.iter_mut().zip(&shape).zip(&ws.ahead) {
                 *c = g + a;
@@ -227,7 +229,22 @@ impl WearIntegrator {
         }
         hist.shape = written;
         hist.contact_shape = contact_shape;
+        for (depth, w) in hist.worn_depth.iter_mut().zip(&worn) {
+            *depth = w.iter().cloned().fold(0.0, f64::max);
+        }
         hist
+    }
+
+    /// Add `k` half periods of each wearing body's wear at `pressure` (MPa) to `worn` (mm,
+    /// one array per body), `sliding` being each law's ∫|v|ᵃ dτ.
+    fn accumulate_wear(&self, pressure: &[f64], sliding: &[f64], k: f64, worn: &mut [Vec<f64>; 2]) {
+        for ((law, &body), s) in self.laws.iter().zip(&self.law_bodies).zip(sliding) {
+            let c = k * law.beta * s;
+            for (w, &p) in worn[body].iter_mut().zip(pressure) {
+                let p = p.max(0.0);
+                *w += c * if law.b == 1.0 { p } else { p.powf(law.b) };
+            }
+        }
     }
 
     /// The coarse cycle of a macro step ([`super::adaptive`]): one cycle with factor `k`
