@@ -31,7 +31,9 @@ def variants(grid: Grid) -> List[Dict[str, Any]]:
 def solve_variant(problem, job: str = "steady") -> Dict[str, Any]:
     """One variant's row: status, converged, peak_p_plus, peak_p_minus (MPa), p_plus_<probe>,
     p_minus_<probe> (MPa), rigid wear per period (lambda_F mm, lambda_M rad; steady only),
-    shape_range (mm), seconds (s, this variant's own wall time). Runs with the GIL released.
+    shape_range (mm), for runs steady_distance (the last cycle's pressures from the steady
+    state, relative to its peak) and steady_reached, seconds (s, this variant's own wall
+    time). Runs with the GIL released.
 
     A variant that did not converge (``converged`` False) has NaN for every value: nothing of
     a failed or non-converged solve is a result (``wearfem sweep`` leaves those cells empty)."""
@@ -49,6 +51,11 @@ def solve_variant(problem, job: str = "steady") -> Dict[str, Any]:
     for name, value in row.get("rigid_wear_per_period", {}).items():
         out[f"{name}_per_period"] = _float(value)
     out["shape_range"] = _float(row.get("shape_range"))
+    if job == "run":
+        # How far the run ended from the steady state (relative to its peak), as `wearfem
+        # run` says it: a converged run can still be far from it.
+        out["steady_distance"] = _float(row.get("steady_distance"))
+        out["steady_reached"] = row.get("steady_reached")
     out["seconds"] = row["seconds"]
     return out
 

@@ -143,6 +143,12 @@ pub struct Values {
     /// Rigid wear per period by plate unknown, in the order of `Outcome::rigid_names`
     /// (`lambda_F` mm, `lambda_M` rad); steady only.
     pub rigid_wear_per_period: Option<Vec<f64>>,
+    /// Run only: how far the last cycle's pressures are from the steady state of the same
+    /// problem, relative to its peak (`steady_distance.pressure` of `wearfem run`; `None`
+    /// without a steady state to compare with), and whether the run counts as at the steady
+    /// state (`steady_reached`). A converged run can still be far from it: a study of runs
+    /// says which.
+    pub steady: Option<(Option<f64>, bool)>,
 }
 
 impl Outcome {
@@ -178,6 +184,18 @@ impl Outcome {
     pub fn probe_p_minus(&self, name: &str) -> Option<f64> {
         let i = self.probes.iter().find(|p| p.0 == name)?.1;
         Some(self.values.as_ref()?.p_minus.as_ref()?[i])
+    }
+
+    /// Run only: the last cycle's distance from the steady state, relative to its peak;
+    /// `None` without values, for a steady variant, or without a steady state to compare.
+    pub fn steady_distance(&self) -> Option<f64> {
+        self.values.as_ref()?.steady?.0
+    }
+
+    /// Run only: whether the run ended at the steady state; `None` without values or for a
+    /// steady variant.
+    pub fn steady_reached(&self) -> Option<bool> {
+        Some(self.values.as_ref()?.steady?.1)
     }
 
     /// Rigid wear per period of plate unknown `name` (mm or rad); `None` without values.
@@ -225,6 +243,7 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
                     p_plus: state.p_plus,
                     shape: state.shape,
                     rigid_wear_per_period: Some(state.rigid_wear),
+                    steady: None,
                 }),
                 seconds: 0.0,
             }
@@ -278,6 +297,15 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
                     p_minus: reciprocating.then(|| h.p_minus.clone()),
                     shape: h.shape.clone(),
                     rigid_wear_per_period: None,
+                    steady: Some((
+                        match run.steady_check {
+                            super::steady_check::SteadyCheck::Compared { pressure, .. } => {
+                                Some(pressure)
+                            }
+                            _ => None,
+                        },
+                        run.steady_check.reached(h),
+                    )),
                 }),
                 seconds: 0.0,
             }

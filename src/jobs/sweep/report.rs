@@ -17,7 +17,7 @@ fn text_cell(s: &str) -> Value {
 
 /// Column names of `sweep.csv` for these outcomes (taken from the problem and the contact,
 /// which every variant has whether or not it converged).
-fn columns(variants: &[Variant], outcomes: &[Outcome]) -> Columns {
+fn columns(job: Job, variants: &[Variant], outcomes: &[Outcome]) -> Columns {
     let first = &outcomes[0];
     Columns {
         keys: variants[0]
@@ -28,6 +28,7 @@ fn columns(variants: &[Variant], outcomes: &[Outcome]) -> Columns {
         reciprocating: outcomes.iter().any(|o| o.reciprocating),
         probes: first.probes.iter().map(|p| p.0.clone()).collect(),
         rigid: first.rigid_names.clone(),
+        run: job == Job::Run,
     }
 }
 
@@ -36,6 +37,8 @@ struct Columns {
     reciprocating: bool,
     probes: Vec<String>,
     rigid: Vec<String>,
+    /// A study of wear runs: each row says how far its run ended from the steady state.
+    run: bool,
 }
 
 impl Columns {
@@ -57,6 +60,10 @@ impl Columns {
             h.push(format!("rigid_wear_per_period_{r}_{unit}"));
         }
         h.push("shape_range_mm".into());
+        if self.run {
+            h.push("steady_distance".into());
+            h.push("steady_reached".into());
+        }
         h.push("seconds".into());
         h
     }
@@ -85,6 +92,13 @@ impl Columns {
             r.push(cell(o.rigid_wear(name)));
         }
         r.push(cell(o.shape_range()));
+        if self.run {
+            r.push(cell(o.steady_distance()));
+            r.push(
+                o.steady_reached()
+                    .map_or_else(|| Value::String(String::new()), Value::from),
+            );
+        }
         r.push(number(o.seconds));
         r
     }
@@ -124,6 +138,8 @@ pub fn summary(
                 "peak_p_plus": value(o.peak_p_plus()),
                 "probes_p_plus": probes(&|n| o.probe_p_plus(n)),
                 "shape_range": value(o.shape_range()),
+                "steady_distance": value(o.steady_distance()),
+                "steady_reached": o.steady_reached(),
                 "seconds": o.seconds,
                 "x": numbers(&o.x),
                 "p_plus": values.map_or(Value::Null, |v| numbers(&v.p_plus)),
@@ -168,7 +184,7 @@ pub fn write(
     outcomes: &[Outcome],
     seconds: f64,
 ) -> Result<(), OutputError> {
-    let columns = columns(variants, outcomes);
+    let columns = columns(job, variants, outcomes);
     let header = columns.header();
     let header: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
     let rows: Vec<Vec<Value>> = variants
