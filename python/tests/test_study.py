@@ -135,3 +135,14 @@ def test_dask_token_names_the_problem_without_rebuilding_it(punch):
     assert tokenize(a) == tokenize(punch.with_overrides({"contact.friction": 0.1}))
     assert tokenize(a) != tokenize(punch.with_overrides({"contact.friction": 0.2}))
     assert tokenize(a) != tokenize(punch)
+
+
+def test_run_rows_say_how_far_they_are_from_the_steady_state(punch):
+    # 150 steps of punch-b40 are far from the steady state, 1700 within 1 % (as wearfem run
+    # reports it); both rows converge as steps.
+    table = wearfem.study(punch, {"wear.steps": [150, 1700], "wear.record": [[]]}, job="run")
+    steady_reached = list(table["steady_reached"])
+    distance = list(table["steady_distance"])
+    assert list(table["converged"]) == [True, True]
+    assert steady_reached == [False, True]
+    assert distance[0] > 0.1 and distance[1] < 0.01
