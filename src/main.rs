@@ -288,19 +288,14 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 wearfem::vtk::write_contact_job(&out, &p)?;
             }
             let peak = solution.pressure.iter().cloned().fold(0.0, f64::max);
-            if let Some(w) = driver::penalty_warning(&p, &contact) {
-                eprintln!("{w}");
-            }
             // The zone diagnostics describe a solution: a failed solve gets none (its
             // pressures are not one), only what its failure says about the loads.
+            for w in summary["warnings"].as_array().into_iter().flatten() {
+                eprintln!("{}", w.as_str().unwrap_or_default());
+            }
             let unbalanced = (!solved)
                 .then(|| driver::pressure_at_one_end(&solution.pressure))
                 .flatten();
-            if solved {
-                for w in driver::zone_warnings(&p, &contact, &[&solution.pressure]) {
-                    eprintln!("{w}");
-                }
-            }
             if solved {
                 println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
             }

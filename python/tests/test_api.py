@@ -222,3 +222,12 @@ def test_warnings_reach_python():
         quiet = wearfem.Problem.builtin("punch-b40").steady()
         run = wearfem.Problem.builtin("punch-b40").run(steps=100)
     assert quiet.warnings == [] and run.warnings == []
+
+
+def test_contact_warnings_reach_python():
+    # Hertz with body 2 at p = 1 under body 1 at p = 8: the peak is 9 % above the closed form
+    # and the zone is reported as unresolved by body 2 (tests/mortar.rs); so in Python too.
+    problem = wearfem.Problem.builtin("hertz").with_overrides({"bodies[1].p": 1})
+    with pytest.warns(wearfem.WearfemWarning, match="ends inside an element of body 2"):
+        c = problem.contact()
+    assert c.warnings and c.summary["warnings"] == c.warnings

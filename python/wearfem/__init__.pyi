@@ -36,6 +36,7 @@ class ElasticResult:
 
 class ContactResult:
     summary: Dict[str, Any]
+    warnings: List[str]  # the command line's warning lines
     x: FloatArray  # mm
     z: FloatArray  # mm
     pressure: Optional[FloatArray]  # MPa; None for a failed solve

@@ -254,6 +254,13 @@ pub fn contact(
     // A failed solve is returned too (status in `info`), with its residuals but none of its
     // values in the summary: nothing taken from a failed solve is a result.
     let mut summary = summary;
+    // The console's warning lines, also for Python: the zone diagnostics describe a
+    // solution, so a failed solve gets none.
+    let mut warnings: Vec<String> = penalty_warning(problem, &contact).into_iter().collect();
+    if info.status == Status::Solved {
+        warnings.extend(zone_warnings(problem, &contact, &[&solution.pressure]));
+    }
+    summary["warnings"] = json!(warnings);
     if info.status != Status::Solved {
         for key in ["pressure", "gap", "rigid", "probes"] {
             summary[key] = Value::Null;
