@@ -99,6 +99,29 @@ pub(crate) fn sweep(
         variants.len(),
         out.join("sweep.csv").display()
     );
+    let warned: Vec<String> = variants
+        .iter()
+        .zip(&outcomes)
+        .filter(|(_, o)| !o.warnings.is_empty())
+        .map(|(v, o)| {
+            let sets: Vec<String> = v
+                .overrides
+                .iter()
+                .map(|o| format!("{}={}", o.key, o.value_text()))
+                .collect();
+            format!("{} ({} warnings)", sets.join(" "), o.warnings.len())
+        })
+        .collect();
+    if !warned.is_empty() {
+        // The lines `wearfem steady`/`run` would print for each: in sweep.json, counted in
+        // the CSV's `warnings` column.
+        eprintln!(
+            "warning: {file}: {} of {} variants have warnings (their texts are in sweep.json, `warnings`): {}",
+            warned.len(),
+            variants.len(),
+            warned.join("; ")
+        );
+    }
     if failed > 0 {
         // Name each failed variant by its overrides, so that nobody has to find them in the
         // table; their value cells hold nothing (empty in the CSV, null in the JSON).

@@ -279,3 +279,41 @@ fn run_rows_say_how_far_they_are_from_the_steady_state() {
     assert_eq!(csv_cells(csv.lines().nth(1).unwrap())[column], "false");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A study row must not hide what `wearfem steady` would warn about: β̃ = 1e-3 on punch-b40
+/// breaks the quasi-static half period (tests/validity.rs). Its row counts the warning in the
+/// CSV, sweep.json has the text, and stderr names the variant; steady rows have no run-only
+/// keys (review 2026-11-24).
+#[test]
+fn a_variant_with_warnings_says_so() {
+    let dir = scratch("warned");
+    let out = dir.to_str().unwrap();
+    let (code, _, err) = wearfem(&[
+        "sweep",
+        "punch-b40",
+        "--set",
+        "wear.body1.beta=[3.9e-8,1e-3]",
+        "--quiet",
+        "--out",
+        out,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        err.contains("1 of 2 variants have warnings") && err.contains("wear.body1.beta=0.001"),
+        "{err}"
+    );
+    let summary = json(&dir.join("sweep.json"));
+    let rows = summary["variants"].as_array().unwrap();
+    assert!(rows[0]["warnings"].as_array().unwrap().is_empty());
+    let texts = rows[1]["warnings"].as_array().unwrap();
+    assert!(texts
+        .iter()
+        .any(|w| w.as_str().unwrap().contains("one half period")));
+    assert!(rows[0].get("steady_distance").is_none() && rows[0].get("steady_reached").is_none());
+    let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
+    let header = csv_cells(csv.lines().next().unwrap());
+    let column = header.iter().position(|h| h == "warnings").unwrap();
+    assert_eq!(csv_cells(csv.lines().nth(1).unwrap())[column], "0");
+    assert_ne!(csv_cells(csv.lines().nth(2).unwrap())[column], "0");
+    let _ = std::fs::remove_dir_all(&dir);
+}

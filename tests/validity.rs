@@ -240,3 +240,20 @@ fn worn_depth_is_archards_on_a_uniform_pressure() {
         "{depth} against {expected}"
     );
 }
+
+/// `contact` checks the plate motion too (review 2026-11-24: E = 10⁻³ MPa moved the plate
+/// 2.3 km in `wearfem contact` without a word while `run` and `steady` warned).
+#[test]
+fn the_contact_job_checks_the_plate_motion() {
+    let soft = builtin("punch-b40", &["materials.steel.young=1e-3"]);
+    let (summary, _, _, _) = driver::contact(&soft).unwrap();
+    let warnings = summary["warnings"].as_array().unwrap();
+    assert!(
+        warnings
+            .iter()
+            .any(|w| w.as_str().unwrap().contains("the plate moves by")),
+        "{warnings:?}"
+    );
+    let (summary, _, _, _) = driver::contact(&builtin("punch-b40", &[])).unwrap();
+    assert!(summary["warnings"].as_array().unwrap().is_empty());
+}

@@ -146,3 +146,14 @@ def test_run_rows_say_how_far_they_are_from_the_steady_state(punch):
     assert list(table["converged"]) == [True, True]
     assert steady_reached == [False, True]
     assert distance[0] > 0.1 and distance[1] < 0.01
+
+
+def test_a_variant_with_warnings_says_so(punch):
+    # β̃ = 1e-3 on punch-b40: one half period's wear moves the pressure by far more than 2 %
+    # (the quasi-static half period fails), which `wearfem steady` warns about; a study row
+    # must not hide it.
+    with pytest.warns(wearfem.WearfemWarning, match="1 of 2 variants have warnings"):
+        table = wearfem.study(punch, {"wear.body1.beta": [3.9e-8, 1e-3]})
+    counts = [len(w) for w in table["warnings"]]
+    assert counts[0] == 0 and counts[1] >= 1
+    assert "one half period" in list(table["warnings"])[1][0]

@@ -33,7 +33,8 @@ def solve_variant(problem, job: str = "steady") -> Dict[str, Any]:
     p_minus_<probe> (MPa), rigid wear per period (lambda_F mm, lambda_M rad; steady only),
     shape_range (mm), for runs steady_distance (the last cycle's pressures from the steady
     state, relative to its peak) and steady_reached, seconds (s, this variant's own wall
-    time). Runs with the GIL released.
+    time), warnings (the command line's warning lines for the variant, a list). Runs with the
+    GIL released.
 
     A variant that did not converge (``converged`` False) has NaN for every value: nothing of
     a failed or non-converged solve is a result (``wearfem sweep`` leaves those cells empty)."""
@@ -56,6 +57,8 @@ def solve_variant(problem, job: str = "steady") -> Dict[str, Any]:
         # run` says it: a converged run can still be far from it.
         out["steady_distance"] = _float(row.get("steady_distance"))
         out["steady_reached"] = row.get("steady_reached")
+    # The warning lines `wearfem steady`/`run` would print for this variant (a list).
+    out["warnings"] = list(row.get("warnings", []))
     out["seconds"] = row["seconds"]
     return out
 
@@ -117,6 +120,19 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
         chunks = [problems[i : i + chunksize] for i in range(0, len(problems), chunksize)]
         futures = [executor.submit(solve_variants, c, job) for c in chunks]
         rows = [row for f in futures for row in f.result()]
+    warned = [s for s, r in zip(sets, rows) if r.get("warnings")]
+    if warned:
+        # One line for the study; each variant's lines are in its `warnings` cell.
+        import warnings
+
+        from . import WearfemWarning
+
+        warnings.warn(
+            f"{len(warned)} of {len(sets)} variants have warnings (the `warnings` column), "
+            f"first {warned[0]}",
+            WearfemWarning,
+            stacklevel=2,
+        )
     return _table(sets, rows)
 
 

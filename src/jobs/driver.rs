@@ -258,6 +258,11 @@ pub fn contact(
     // solution, so a failed solve gets none.
     let mut warnings: Vec<String> = penalty_warning(problem, &contact).into_iter().collect();
     if info.status == Status::Solved {
+        warnings.extend(super::validity::plate_motion_warning(
+            problem,
+            &contact,
+            &solution.rigid,
+        ));
         warnings.extend(zone_warnings(problem, &contact, &[&solution.pressure]));
     }
     summary["warnings"] = json!(warnings);

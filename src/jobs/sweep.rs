@@ -129,6 +129,9 @@ pub struct Outcome {
     pub values: Option<Values>,
     /// Wall-clock seconds of this variant (set-up included).
     pub seconds: f64,
+    /// The warning lines `wearfem steady` or `wearfem run` would print for this variant
+    /// (none for one that did not converge, whose values are not results anyway).
+    pub warnings: Vec<String>,
 }
 
 /// The figures of a converged variant.
@@ -223,6 +226,11 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
         Job::Steady => {
             let (state, contact, _) = driver::steady(problem)?;
             let converged = state.status == crate::steady::SteadyStatus::Solved;
+            let warnings = if converged {
+                driver::steady_warnings(problem, &contact, &state)
+            } else {
+                Vec::new()
+            };
             let reciprocating = state.sliding == crate::steady::SteadySliding::Reciprocating;
             Outcome {
                 status: if converged {
@@ -246,6 +254,7 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
                     steady: None,
                 }),
                 seconds: 0.0,
+                warnings,
             }
         }
         Job::Run => {
@@ -308,6 +317,11 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
                     )),
                 }),
                 seconds: 0.0,
+                warnings: if converged {
+                    run.warnings(problem).to_vec()
+                } else {
+                    Vec::new()
+                },
             }
         }
     };

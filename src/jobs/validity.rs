@@ -169,11 +169,24 @@ pub fn displacement_warning(
     solver: &mut ContactSolver,
     direction: Direction,
 ) -> Option<String> {
+    let (solution, info) = solver.solve(&contact.points.initial_gap, direction);
+    if info.status != Status::Solved {
+        return None;
+    }
+    plate_motion_warning(problem, contact, &solution.rigid)
+}
+
+/// The warning of [`displacement_warning`] for a solved contact problem's plate unknowns
+/// `rigid` (λ_F mm, λ_M rad, in `contact.rigid_names` order).
+pub fn plate_motion_warning(
+    problem: &Problem,
+    contact: &CondensedContact,
+    rigid: &[f64],
+) -> Option<String> {
     let c = problem.spec.contact.as_ref()?;
     let mesh = problem.mesh(problem.body_index(&c.body).ok()?).ok()?;
     let size = extent(mesh.vertices.iter().copied(), mean_normal(contact)?);
-    let (solution, info) = solver.solve(&contact.points.initial_gap, direction);
-    if info.status != Status::Solved || size <= 0.0 {
+    if size <= 0.0 {
         return None;
     }
     let rigid = |name: &str| {
@@ -181,7 +194,7 @@ pub fn displacement_warning(
             .rigid_names
             .iter()
             .position(|n| *n == name)
-            .map_or(0.0, |i| solution.rigid[i].abs())
+            .map_or(0.0, |i| rigid[i].abs())
     };
     let (translation, rotation) = (rigid("lambda_F"), rigid("lambda_M"));
     let what = if translation > GEOMETRY_LIMIT * size {
@@ -252,9 +265,11 @@ pub fn steady_checks(
     contact: &CondensedContact,
     state: &crate::steady::SteadyState,
 ) -> Vec<String> {
-    let Some((mut solver, integrator, first)) = tools(problem, contact) else {
+    let Some((_, integrator, first)) = tools(problem, contact) else {
         return Vec::new();
     };
+    // The steady solver knows only exact contact: its checks use the same.
+    let mut solver = ContactSolver::new(contact, crate::complementarity::Method::ActiveSet);
     let pressures = match state.sliding {
         crate::steady::SteadySliding::Monotonic(d) => vec![(d, &state.p_plus[..])],
         crate::steady::SteadySliding::Reciprocating => vec![
@@ -264,6 +279,17 @@ pub fn steady_checks(
     };
     let change = half_period_pressure_change(&mut solver, &integrator, &state.shape, &pressures);
     let mut warnings: Vec<String> = half_period_warning(problem, change).into_iter().collect();
+    if problem
+        .spec
+        .contact
+        .as_ref()
+        .is_some_and(|c| c.method == "penalty")
+    {
+        warnings.push(format!(
+            "warning: {}: contact.method = \"penalty\" is not used by `steady`, which solves exact contact (its checks too); `run` and `contact` use the penalty",
+            problem.file
+        ));
+    }
     warnings.extend(displacement_warning(problem, contact, &mut solver, first));
     warnings
 }

@@ -64,6 +64,7 @@ impl Columns {
             h.push("steady_distance".into());
             h.push("steady_reached".into());
         }
+        h.push("warnings".into());
         h.push("seconds".into());
         h
     }
@@ -99,6 +100,8 @@ impl Columns {
                     .map_or_else(|| Value::String(String::new()), Value::from),
             );
         }
+        // How many warning lines the variant has; their texts are in sweep.json.
+        r.push(json!(o.warnings.len()));
         r.push(number(o.seconds));
         r
     }
@@ -138,13 +141,16 @@ pub fn summary(
                 "peak_p_plus": value(o.peak_p_plus()),
                 "probes_p_plus": probes(&|n| o.probe_p_plus(n)),
                 "shape_range": value(o.shape_range()),
-                "steady_distance": value(o.steady_distance()),
-                "steady_reached": o.steady_reached(),
+                "warnings": o.warnings,
                 "seconds": o.seconds,
                 "x": numbers(&o.x),
                 "p_plus": values.map_or(Value::Null, |v| numbers(&v.p_plus)),
                 "shape": values.map_or(Value::Null, |v| numbers(&v.shape)),
             });
+            if job == Job::Run {
+                row["steady_distance"] = value(o.steady_distance());
+                row["steady_reached"] = json!(o.steady_reached());
+            }
             if o.reciprocating {
                 row["peak_p_minus"] = value(o.peak_p_minus());
                 row["probes_p_minus"] = json!(probes(&|n| o.probe_p_minus(n)));
