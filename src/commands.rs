@@ -103,14 +103,7 @@ pub(crate) fn sweep(
         .iter()
         .zip(&outcomes)
         .filter(|(_, o)| !o.warnings.is_empty())
-        .map(|(v, o)| {
-            let sets: Vec<String> = v
-                .overrides
-                .iter()
-                .map(|o| format!("{}={}", o.key, o.value_text()))
-                .collect();
-            format!("{} ({} warnings)", sets.join(" "), o.warnings.len())
-        })
+        .map(|(v, o)| format!("{} ({} warnings)", variant_name(v), o.warnings.len()))
         .collect();
     if !warned.is_empty() {
         // The lines `wearfem steady`/`run` would print for each: in sweep.json, counted in
@@ -129,14 +122,7 @@ pub(crate) fn sweep(
             .iter()
             .zip(&outcomes)
             .filter(|(_, o)| !o.converged)
-            .map(|(v, o)| {
-                let sets: Vec<String> = v
-                    .overrides
-                    .iter()
-                    .map(|o| format!("{}={}", o.key, o.value_text()))
-                    .collect();
-                format!("{} ({})", sets.join(" "), o.status)
-            })
+            .map(|(v, o)| format!("{} ({})", variant_name(v), o.status))
             .collect();
         return Err(Failure::Compute(format!(
             "{failed} of {} variants did not converge: {}; their value cells are left empty in {} (null in sweep.json): only their status and time are written",
@@ -146,6 +132,16 @@ pub(crate) fn sweep(
         )));
     }
     Ok(())
+}
+
+/// A variant named by its overrides, `KEY=VALUE KEY=VALUE`, as on the command line.
+fn variant_name(v: &wearfem::sweep::Variant) -> String {
+    let sets: Vec<String> = v
+        .overrides
+        .iter()
+        .map(|o| format!("{}={}", o.key, o.value_text()))
+        .collect();
+    sets.join(" ")
 }
 
 fn write_text(dir: &Path, name: &str, text: &str) -> Result<(), Failure> {
