@@ -61,6 +61,11 @@ pub struct ContactSpec {
     /// "collocation" (one partner point per contact point; needs matching mesh lines).
     #[serde(default = "mortar")]
     pub discretisation: String,
+    /// Add mesh lines to body 2 where the normal lines through body 1's element ends on the
+    /// contact edge cross body 2's contact edge (default true; see
+    /// [`crate::mesh::Mesh::aligned_to`]). False keeps body 2's mesh as given.
+    #[serde(default = "yes")]
+    pub align_target_mesh: bool,
 }
 
 /// A circular initial gap (a cylinder of radius `radius` mm touching at x = `center_x`).
@@ -78,6 +83,9 @@ fn plus() -> String {
 }
 fn active_set() -> String {
     "active_set".into()
+}
+fn yes() -> bool {
+    true
 }
 fn mortar() -> String {
     "mortar".into()
@@ -147,6 +155,19 @@ pub struct CondensedContact {
     /// Collocation only: the lines of body 2 inside one of body 1's contact elements (where
     /// one-point partners make the pressure oscillate); empty for matched lines and for mortar.
     pub unmatched_lines: Vec<UnmatchedLine>,
+    /// Mesh lines added to body 2 under body 1's element ends (`contact.align_target_mesh`,
+    /// [`crate::mesh::Mesh::aligned_to`]), and body 2's element count with them.
+    pub target_mesh: TargetMesh,
+}
+
+/// What aligning body 2's mesh with body 1's element ends did to it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TargetMesh {
+    /// Mesh lines added to body 2's blocks (0 when its lines already met body 1's ends, or
+    /// with `align_target_mesh = false`).
+    pub lines_added: usize,
+    /// Body 2's elements, the added lines' included.
+    pub elements: usize,
 }
 
 fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize, bool)> {
@@ -276,46 +297,7 @@ fn locate_on_body2(
     x: Point,
     n: Point,
 ) -> Option<(f64, usize, usize, f64)> {
-    let mut best: Option<(f64, usize, usize, f64)> = None;
-    for &(element, local) in edges {
-        // Signed distance of edge point y(t) from the normal line: (y − x)·τ, τ ⟂ n; bisection.
-        let side = |t: f64| {
-            let y = body.mesh.point_on_edge(element, local, t);
-            (y[0] - x[0]) * (-n[1]) + (y[1] - x[1]) * n[0]
-        };
-        let (fa, fb) = (side(-1.0), side(1.0));
-        let scale = 1e-10 * (1.0 + x[0].abs() + x[1].abs());
-        let t = if fa.abs() <= scale {
-            -1.0
-        } else if fb.abs() <= scale {
-            1.0
-        } else if fa * fb < 0.0 {
-            let (mut lo, mut hi) = (-1.0, 1.0);
-            for _ in 0..80 {
-                let mid = 0.5 * (lo + hi);
-                if (side(mid) < 0.0) == (fa < 0.0) {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            0.5 * (lo + hi)
-        } else {
-            continue;
-        };
-        // Only a surface that faces body 1 can be its partner: its outward normal must point
-        // back against n (an edge on the far side of body 2 also crosses the normal line).
-        let (_, outward) = body.mesh.edge_frame(element, local, t);
-        if outward[0] * n[0] + outward[1] * n[1] >= 0.0 {
-            continue;
-        }
-        let y = body.mesh.point_on_edge(element, local, t);
-        let s = (y[0] - x[0]) * n[0] + (y[1] - x[1]) * n[1];
-        if best.is_none_or(|b| s.abs() < b.0.abs()) {
-            best = Some((s, element, local, t));
-        }
-    }
-    best
+    body.mesh.cross_edges(edges, x, n)
 }
 
 /// Find the point of body 2's edge on the line x + s n and return (s, the point, trace).
@@ -549,6 +531,10 @@ impl CondensedContact {
             plate_resultant,
             surface_continues: zone::surface_continues(body1, &chain),
             resolution,
+            target_mesh: TargetMesh {
+                lines_added: body2.mesh.added_lines,
+                elements: body2.mesh.elements.len(),
+            },
             unmatched_lines,
         };
         Ok(contact)

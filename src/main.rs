@@ -296,6 +296,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let unbalanced = (!solved)
                 .then(|| driver::pressure_at_one_end(&solution.pressure))
                 .flatten();
+            if let Some(note) = driver::target_mesh_note(&p, &contact) {
+                println!("{note}");
+            }
             if solved {
                 println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
             }
@@ -347,6 +350,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     .collect(),
                 None => vec!["no steps".to_string()],
             };
+            if let Some(note) = driver::target_mesh_note(&p, &result.contact) {
+                println!("{note}");
+            }
             println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '{first}' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
             match &h.steady_distance {
                 Some(d) => {
@@ -433,6 +439,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
             let warnings = driver::steady_warnings(&p, &contact, &state);
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds, &warnings)?;
+            if let Some(note) = driver::target_mesh_note(&p, &contact) {
+                println!("{note}");
+            }
             if wants_vtk(vtk, &p) {
                 wearfem::vtk::write_steady(&out, &p, &state)?;
             }

@@ -48,9 +48,14 @@ fn hertz(kind: &str, h1: f64, h2: f64, shift: f64, discretisation: &str) -> Prob
     example_hertz(&sets)
 }
 
-/// The built-in example `hertz` with `sets` (KEY=VALUE) applied.
+/// The built-in example `hertz` with `sets` (KEY=VALUE) applied, body 2 meshed as given: these
+/// tests judge the coupling of two independent meshes, so body 2 gets no lines under body 1's
+/// element ends (`contact.align_target_mesh`, tested on its own below).
 fn example_hertz(sets: &[String]) -> Problem {
-    let overrides: Vec<Override> = sets.iter().map(|s| Override::parse(s).unwrap()).collect();
+    let overrides: Vec<Override> = std::iter::once("contact.align_target_mesh=false")
+        .chain(sets.iter().map(String::as_str))
+        .map(|s| Override::parse(s).unwrap())
+        .collect();
     let text = wearfem::examples::example("hertz").unwrap();
     Problem::with_overrides(text, "hertz", &overrides).unwrap()
 }
@@ -252,7 +257,8 @@ fn hertz_ripple_from_a_coarse_partner_is_the_partners() {
 /// Two blocks 10 mm wide, meshed independently (3 and 4 uneven elements across), the upper
 /// one (ν = 0, so that the plate clamping its top edge does not restrain it) pressed with
 /// `load` MPa on the lower one (ν = 0.3, on rollers: base held in z, left side in x).
-fn patch(discretisation: &str, p: usize) -> Problem {
+/// `align`: whether the lower block gets lines under the upper one's element ends.
+fn patch(discretisation: &str, p: usize, align: bool) -> Problem {
     let text = format!(
         r#"
 [analysis]
@@ -300,6 +306,7 @@ edge = "contact"
 target_body = "lower"
 target_edge = "surface"
 discretisation = "{discretisation}"
+align_target_mesh = {align}
 
 [plate]
 edge = "top"
@@ -314,8 +321,8 @@ fn patch_test_uniform_pressure_crosses_non_matching_meshes() {
     // The exact solution is a uniform stress σ_zz = −10 MPa in both blocks, a linear
     // displacement: inside every finite element space, so a consistent contact discretisation
     // must reproduce it to round-off. 1e-8: the issue's bound (round-off is ~1e-12 here).
-    for p in [2, 5, 8] {
-        let (_, sol) = solve(&patch("mortar", p));
+    for (p, align) in [(2, false), (5, false), (8, false), (8, true)] {
+        let (_, sol) = solve(&patch("mortar", p, align));
         let worst = sol
             .pressure
             .iter()
@@ -328,7 +335,7 @@ fn patch_test_uniform_pressure_crosses_non_matching_meshes() {
     }
     // Collocation loads body 2 with point forces at the partner points, which are not the
     // consistent loads of a uniform pressure across body 2's element ends: it fails the test.
-    let (_, sol) = solve(&patch("collocation", 8));
+    let (_, sol) = solve(&patch("collocation", 8, false));
     let worst = sol
         .pressure
         .iter()
@@ -355,7 +362,9 @@ enum Strip {
     Even(usize),
 }
 
-fn punch(strip: Strip, discretisation: &str) -> Problem {
+/// punch-b40 with the strip meshed as `strip`, its lines as given (`align` false) or with lines
+/// added under the punch's element ends (the default).
+fn punch_with(strip: Strip, discretisation: &str, align: bool) -> Problem {
     let lines = match strip {
         Strip::Matched => MATCHED_STRIP.to_string(),
         Strip::MatchedCut(k) => {
@@ -374,9 +383,14 @@ fn punch(strip: Strip, discretisation: &str) -> Problem {
         .replace(MATCHED_STRIP, &lines)
         .replace(
             "discretisation = \"collocation\"",
-            &format!("discretisation = \"{discretisation}\""),
+            &format!("discretisation = \"{discretisation}\"\nalign_target_mesh = {align}"),
         );
     Problem::from_toml(&text, "punch-b40").unwrap()
+}
+
+/// punch-b40 with the strip meshed as `strip`, as given.
+fn punch(strip: Strip, discretisation: &str) -> Problem {
+    punch_with(strip, discretisation, false)
 }
 
 /// Largest difference at the points that are not among the first or last `skip`, and the
@@ -390,65 +404,46 @@ fn differences(a: &[f64], b: &[f64], skip: usize) -> (f64, f64) {
     (max, rms)
 }
 
+/// The issue's case as a user meets it: the strip's 12 elements spaced evenly, every default
+/// on. Body 2 then gets lines under the punch's element ends (`contact.align_target_mesh`),
+/// and the results meet the issue's bounds against the matched mesh: the first solve within
+/// 2 % of its peak away from the two edge points, the steady and 1700-step p⁺ within 1 % of
+/// 2p̃ at every point. (As given, the same strip misses them: the test below.)
 #[test]
 fn punch_on_an_evenly_meshed_strip_matches_the_matched_mesh() {
-    // Same contact points on body 1 in both models; only the strip's mesh differs (12 even
-    // elements of 16.7 mm whose lines miss the punch corners, against lines at the corners).
+    let even = || punch_with(Strip::Even(12), "mortar", true);
     let (contact, matched) = solve(&punch(Strip::Matched, "collocation"));
-    let (_, even) = solve(&punch(Strip::Even(12), "mortar"));
+    let (_, first) = solve(&even());
     let peak = matched.pressure.iter().cloned().fold(0.0, f64::max);
-    // 2 % of the peak away from the corners. The four points within 2.4 mm of the left
-    // corner (1070) are excluded: there the pressure is singular and a 16.7 mm strip element
-    // spanning the corner cannot resolve the strip's response (6 % of the peak at the second
-    // point, with collocation just as with mortar). That is the coarse strip's discretisation
-    // error: it falls to 0.2 % with 96 even elements, and the matched strip is itself 2.2 %
-    // off there (punch_on_an_even_strip_converges_to_the_matched_mesh, docs/validation.md).
-    let (max, _) = differences(&even.pressure, &matched.pressure, 4);
+    // Measured 0.75 % at the second point, next to the singular corner, and 0.02 % from the
+    // fifth on (as given: 6.3 % and 1.1 %).
+    let (max, _) = differences(&first.pressure, &matched.pressure, 1);
     assert!(
         max < 0.02 * peak,
         "first solve: {max:.3} MPa off, peak {peak:.3}"
     );
     assert_eq!(contact.len(), 65);
-    // The steady state: p⁺ + p⁻ = 2p̃ = 33.333 MPa holds on any mesh (paper eq. 23a); p⁺ itself
-    // within 1 % r.m.s. of the peak 2p̃. Pointwise it is 2.3 % off at the two ends of the p⁺
-    // zone, where its slope jumps inside a strip element: 3 % allowed here, and the issue's 1 %
-    // is met by a finer even strip (the test below).
+    let two_p = 33.333; // 2p̃ = 2F₀/(l t), MPa
     let st_matched = wearfem::driver::steady(&punch(Strip::Matched, "collocation"))
         .unwrap()
         .0;
-    let st_even = wearfem::driver::steady(&punch(Strip::Even(12), "mortar"))
-        .unwrap()
-        .0;
-    let sum = |s: &wearfem::steady::SteadyState| -> Vec<f64> {
-        s.p_plus
-            .iter()
-            .zip(&s.p_minus)
-            .map(|(a, b)| a + b)
-            .collect()
-    };
-    let (max, _) = differences(&sum(&st_even), &sum(&st_matched), 0);
-    assert!(
-        max < 1e-6 * 33.333,
-        "steady p⁺ + p⁻ differs by {max:.3e} MPa"
-    );
-    let (max, rms) = differences(&st_even.p_plus, &st_matched.p_plus, 0);
-    assert!(
-        rms < 0.01 * 33.333 && max < 0.03 * 33.333,
-        "steady p⁺: max {max:.3} MPa, r.m.s. {rms:.3} MPa"
-    );
-    // The 1700-step run's last cycle, judged the same way (pointwise up to 2.6 % at the p⁺
-    // zone's ends here; 4 % allowed: the run is not yet steady, and how far its zone ends
-    // still have to move differs a little between the meshes).
+    let st_even = wearfem::driver::steady(&even()).unwrap().0;
+    // p⁺ + p⁻ = 2p̃ on any mesh (paper eq. 23a), to the steady solver's tolerance.
+    let sum: Vec<f64> = st_even
+        .p_plus
+        .iter()
+        .zip(&st_even.p_minus)
+        .map(|(a, b)| a + b)
+        .collect();
+    let (max, _) = differences(&sum, &vec![two_p; sum.len()], 0);
+    assert!(max < 1e-3 * two_p, "steady p⁺ + p⁻ off 2p̃ by {max:.3e} MPa");
+    // 0.09 % measured for both; 1 % is the issue's bound.
+    let (max, _) = differences(&st_even.p_plus, &st_matched.p_plus, 0);
+    assert!(max < 0.01 * two_p, "steady p⁺: max {max:.3} MPa");
     let run = |p: &Problem| wearfem::driver::wear(p, None, |_| {}).unwrap().history;
-    let (h_matched, h_even) = (
-        run(&punch(Strip::Matched, "collocation")),
-        run(&punch(Strip::Even(12), "mortar")),
-    );
-    let (max, rms) = differences(&h_even.p_plus, &h_matched.p_plus, 0);
-    assert!(
-        rms < 0.01 * 33.333 && max < 0.04 * 33.333,
-        "run p⁺: max {max:.3} MPa, r.m.s. {rms:.3} MPa"
-    );
+    let (h_matched, h_even) = (run(&punch(Strip::Matched, "collocation")), run(&even()));
+    let (max, _) = differences(&h_even.p_plus, &h_matched.p_plus, 0);
+    assert!(max < 0.01 * two_p, "run p⁺: max {max:.3} MPa");
 }
 
 #[test]
@@ -467,8 +462,8 @@ fn on_matched_meshes_mortar_is_collocation() {
     assert!(max < 1e-9 * peak, "pressures differ by {max:.3e} MPa");
 }
 
-/// The differences of the 12-element strip from the matched one are the coarse strip's own
-/// discretisation error, not the coupling's. The steady p⁺ has slope jumps at the ends of its
+/// The differences of the 12-element strip as given (`align_target_mesh = false`) from the
+/// matched one are the coarse strip's own discretisation error, not the coupling's. The steady p⁺ has slope jumps at the ends of its
 /// zone (x ≈ 1077.1 and 1122.9 mm), which the matched strip has lines near (1077.5, 1122.5)
 /// while a 16.7 mm even element holds them inside; the first solve is singular at the corner
 /// 1070, inside an even element too. Refining the even strip (mortar on every mesh) brings all
@@ -529,7 +524,8 @@ fn punch_on_an_even_strip_converges_to_the_matched_mesh() {
             (n, first / peak, steady / two_p, run / two_p)
         })
         .collect();
-    // 12 elements miss the issue's bounds (first solve 4.2 %, steady 2.3 %, run 2.6 %)...
+    // 12 elements as given miss the issue's bounds (first solve 4.2 %, steady 2.3 %, run
+    // 2.6 %; with lines added under the punch's element ends they meet them, the test above)...
     let (_, first, steady, run) = errors[0];
     assert!(
         first > 0.02 && steady > 0.01 && run > 0.01,
@@ -564,12 +560,24 @@ fn pin_first_contact_is_smooth() {
         osc < 0.01 * peak,
         "oscillation {osc:.3} MPa, peak {peak:.3}"
     );
-    let coarse = [Override::parse("bodies[1].blocks[0].u=16").unwrap()];
-    let (_, sol) = solve(&Problem::with_overrides(text, "pin", &coarse).unwrap());
-    let osc = oscillation(&x, &sol.pressure, |p| p > 0.6 * peak);
+    let coarse = |align: bool| {
+        let sets = [
+            Override::parse("bodies[1].blocks[0].u=16").unwrap(),
+            Override::parse(&format!("contact.align_target_mesh={align}")).unwrap(),
+        ];
+        let (_, sol) = solve(&Problem::with_overrides(text, "pin", &sets).unwrap());
+        oscillation(&x, &sol.pressure, |p| p > 0.6 * peak)
+    };
+    let osc = coarse(false);
     assert!(
         osc > 0.02 * peak,
         "5 mm flat: oscillation only {osc:.3} MPa"
+    );
+    // With lines added under the pin's element ends (the default) the same flat is smooth.
+    let osc = coarse(true);
+    assert!(
+        osc < 0.005 * peak,
+        "5 mm flat, aligned: oscillation {osc:.3} MPa"
     );
 }
 
@@ -614,6 +622,49 @@ fn a_coarse_partner_is_reported_where_it_ripples() {
         rippled >= 2,
         "only {rippled} meshes rippled by more than 1 %"
     );
+}
+
+/// With the default `contact.align_target_mesh`, body 2 gets lines under body 1's element
+/// ends: the meshes that rippled above (body 2 1.3 to 2.7 times coarser than body 1, three
+/// positions of its lines) then meet the issue's bounds, 2 % on the peak and half-width and
+/// 1 % on the ripple, and the coarse-partner report is quiet.
+#[test]
+fn lines_under_body_1s_element_ends_remove_the_coarse_partners_ripple() {
+    let kind = "plane_strain";
+    let (a, p0) = hertz_closed_form(kind);
+    for (h1, h2) in [(1.0, 1.3), (0.5, 1.35), (1.0, 2.7)] {
+        for shift in [0.1, 0.37, 0.6] {
+            let u1 = lines(-20.0, 20.0, h1, 5.0, 0.0, &[-12.0, -7.0, 7.0, 12.0]);
+            let u2 = lines(-100.0, 100.0, h2, 13.0, shift, &[-50.0, -25.0, 25.0, 50.0]);
+            let sets: Vec<Override> = [
+                format!("bodies[0].blocks[0].u={u1}"),
+                format!("bodies[1].blocks[0].u={u2}"),
+            ]
+            .iter()
+            .map(|s| Override::parse(s).unwrap())
+            .collect();
+            let text = wearfem::examples::example("hertz").unwrap();
+            let problem = Problem::with_overrides(text, "hertz", &sets).unwrap();
+            let (_, added) = problem.target_alignment(1).unwrap().unwrap();
+            let (contact, sol) = solve(&problem);
+            let case = format!("{h1} : {h2} mm shifted {shift}, {added} lines added");
+            assert!(added > 0, "{case}");
+            let peak = sol.pressure.iter().cloned().fold(0.0, f64::max);
+            let a_fit = wearfem::validate::hertz_half_width(&contact, &sol);
+            assert!(
+                (peak - p0).abs() < 0.02 * p0,
+                "{case}: peak {peak:.3}, {p0:.3}"
+            );
+            assert!((a_fit - a).abs() < 0.02 * a, "{case}: a {a_fit:.4}, {a:.4}");
+            let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
+            let ripple = oscillation(&x, &sol.pressure, |v| v > 0.6 * p0);
+            assert!(ripple < 0.01 * p0, "{case}: ripple {ripple:.3} MPa");
+            assert!(
+                contact.coarse_partner_zones(&[&sol.pressure]).is_empty(),
+                "{case}: reported"
+            );
+        }
+    }
 }
 
 /// Collocation needs body 2's lines on body 1's element ends: a line inside an element in
@@ -758,4 +809,20 @@ fn a_lower_degree_on_body_2_is_reported_like_a_coarser_mesh() {
     assert!(!contact.coarse_partner_zones(&[&sol.pressure]).is_empty());
     let (contact, sol) = solve(&example_hertz(&[]));
     assert!(contact.coarse_partner_zones(&[&sol.pressure]).is_empty());
+}
+
+/// summary.json's `target_mesh` counts what the alignment did, from the geometry: the punch's
+/// 9 element ends (1070 + 7.5 i) against 12 even strip lines (1000 + 16.67 k) share only 1100,
+/// so 8 lines are added, and the strip's 4 rows then hold (12 + 8) × 4 elements. The matched
+/// strip and `align_target_mesh = false` add none.
+#[test]
+fn the_summary_counts_the_lines_added_to_body_2() {
+    let lines = |p: &Problem| {
+        let (summary, ..) = wearfem::driver::contact(p).unwrap();
+        let t = &summary["target_mesh"];
+        (t["lines_added"].as_u64().unwrap(), t["elements"].as_u64().unwrap())
+    };
+    assert_eq!(lines(&punch_with(Strip::Even(12), "mortar", true)), (8, 80));
+    assert_eq!(lines(&punch_with(Strip::Even(12), "mortar", false)), (0, 48));
+    assert_eq!(lines(&punch_with(Strip::Matched, "mortar", true)), (0, 48));
 }

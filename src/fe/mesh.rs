@@ -8,6 +8,8 @@
 use crate::geometry::{Block, Point};
 use std::collections::HashMap;
 
+mod align;
+
 /// Errors found while building a mesh.
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]
 pub enum MeshError {
@@ -44,6 +46,9 @@ pub enum MeshError {
         /// Block index in the body.
         block: usize,
     },
+    /// Lines added to align the mesh with another kept spreading to neighbouring blocks.
+    #[error("mesh lines added to match the other body's element ends did not settle after spreading through 256 rounds of neighbouring blocks (set contact.align_target_mesh = false)")]
+    Unsettled,
     /// An element folds over (non-positive Jacobian) somewhere.
     #[error("element {element} of block {block} is folded (Jacobian determinant {det})")]
     Folded {
@@ -110,6 +115,9 @@ pub struct Mesh {
     pub edges: Vec<MeshEdge>,
     /// Named boundary parts: name → (element, local edge) pairs.
     pub named_edges: HashMap<String, Vec<(usize, usize)>>,
+    /// Mesh lines added to the blocks as given, to align this mesh with another body's
+    /// ([`Mesh::aligned_to`]; those that spread to neighbouring blocks included); 0 as built.
+    pub added_lines: usize,
 }
 
 /// Local edge → (start, end) local vertex, in the element-edge convention of [`crate::basis`].
@@ -153,6 +161,7 @@ impl Mesh {
             elements: Vec::new(),
             edges: Vec::new(),
             named_edges: HashMap::new(),
+            added_lines: 0,
         };
         let scale = mesh.bounding_size().max(1e-300);
         let merge_tolerance = 1e-9 * scale;

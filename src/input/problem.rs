@@ -218,8 +218,51 @@ impl Problem {
             .ok_or_else(|| self.error("bodies", format!("no body named \"{name}\"")))
     }
 
-    /// Build the mesh of body `b`.
+    /// Build the mesh of body `b`: as its blocks give it, and for the contact's body 2 with the
+    /// lines [`Problem::target_alignment`] adds.
     pub fn mesh(&self, b: usize) -> Result<Mesh, ProblemError> {
+        match self.target_alignment(b)? {
+            Some((mesh, _)) => Ok(mesh),
+            None => self.mesh_as_given(b),
+        }
+    }
+
+    /// When body `b` is the contact's body 2 and `contact.align_target_mesh` is on (the
+    /// default): its mesh with lines where the normals through body 1's element ends on the
+    /// contact edge cross its contact edge, and how many lines that added to its blocks.
+    /// None for any other body, or when the contact section cannot be read (the contact
+    /// stage then reports it).
+    pub fn target_alignment(&self, b: usize) -> Result<Option<(Mesh, usize)>, ProblemError> {
+        let Some(c) = self.spec.contact.as_ref().filter(|c| c.align_target_mesh) else {
+            return Ok(None);
+        };
+        let (Ok(b1), Ok(b2)) = (self.body_index(&c.body), self.body_index(&c.target_body)) else {
+            return Ok(None);
+        };
+        if b2 != b || b1 == b2 {
+            return Ok(None);
+        }
+        let (mesh1, mesh2) = (self.mesh_as_given(b1)?, self.mesh_as_given(b2)?);
+        let (Ok(edges1), Ok(edges2)) = (
+            self.named_edge(&mesh1, b1, &c.edge, "contact.edge"),
+            self.named_edge(&mesh2, b2, &c.target_edge, "contact.target_edge"),
+        ) else {
+            return Ok(None);
+        };
+        let aligned = mesh2.aligned_to(edges2, &mesh1, edges1).map_err(|e| {
+            self.error(
+                "contact.align_target_mesh",
+                format!(
+                    "body {b2}'s mesh with lines added under body {b1}'s element ends: {e} \
+                     (set align_target_mesh = false to keep it as given)"
+                ),
+            )
+        })?;
+        Ok(Some(aligned))
+    }
+
+    /// Build the mesh of body `b` from its blocks, as the problem file gives it.
+    pub fn mesh_as_given(&self, b: usize) -> Result<Mesh, ProblemError> {
         let body = &self.spec.bodies[b];
         let material_names: Vec<&String> = self.spec.materials.keys().collect();
         let mut blocks = Vec::new();

@@ -15,7 +15,8 @@ use std::time::Instant;
 
 pub use super::warnings::{
     coarse_zones_json, edge_ends_json, edge_ends_warning, model_warnings, penalty_warning,
-    run_warnings, steady_edge_ends, steady_warnings, zone_warnings, STROKE_LIMIT,
+    run_warnings, steady_edge_ends, steady_warnings, target_mesh_json, target_mesh_note,
+    zone_warnings, STROKE_LIMIT,
 };
 
 /// Errors of a job: bad input, or a computation that could not be carried out.
@@ -249,6 +250,7 @@ pub fn contact(
         "plate_moment": number(contact.plate_resultant.1),
         "edge_ends_in_contact": edge_ends_json(&contact.edge_ends_in_contact(&[&solution.pressure])),
         "coarse_partner_zones": coarse_zones_json(&contact.coarse_partner_zones(&[&solution.pressure])),
+        "target_mesh": target_mesh_json(&contact),
         "setup_seconds": setup,
     });
     // A failed solve is returned too (status in `info`), with its residuals but none of its
@@ -498,6 +500,7 @@ impl WearRun {
             "snapshots": h.snapshots.iter().map(|s| json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "pressure": numbers(&s.pressure), "shape": numbers(&s.shape), "wear": numbers(&self.wear_of(&s.shape)) })).collect::<Vec<_>>(),
             "edge_ends_in_contact": edge_ends_json(&self.edge_ends()),
             "coarse_partner_zones": coarse_zones_json(&self.contact.coarse_partner_zones(&[&h.p_plus, &h.p_minus])),
+            "target_mesh": target_mesh_json(&self.contact),
             "solves": h.solves,
             "failed_solves": h.failed_solves,
             "unconverged_steps": h.unconverged_steps,

@@ -42,6 +42,25 @@ pub fn edge_ends_warning(problem: &Problem, ends: &[crate::contact::EdgeEnd]) ->
     ))
 }
 
+/// `target_mesh` of summary.json: the mesh lines added to body 2 under body 1's element ends
+/// (`lines_added`, 0 when none were needed or `contact.align_target_mesh = false`) and body
+/// 2's element count with them (`elements`).
+pub fn target_mesh_json(contact: &CondensedContact) -> Value {
+    json!({ "lines_added": contact.target_mesh.lines_added, "elements": contact.target_mesh.elements })
+}
+
+/// The console note when lines were added to body 2: the mesh solved is not the one given.
+pub fn target_mesh_note(problem: &Problem, contact: &CondensedContact) -> Option<String> {
+    let c = problem.spec.contact.as_ref()?;
+    let t = contact.target_mesh;
+    (t.lines_added > 0).then(|| {
+        format!(
+            "note: {}: {} mesh lines added to body \"{}\" under the element ends of \"{}\"'s contact edge ({} elements now; contact.align_target_mesh = false keeps its mesh as given)",
+            problem.file, t.lines_added, c.target_body, c.body, t.elements
+        )
+    })
+}
+
 /// `coarse_partner_zones` of summary.json: one object per contact zone that body 2's mesh does
 /// not resolve (first and last point index and position, mm; body 2's elements across it;
 /// body 2's and body 1's element lengths at its worse end, mm); an empty list when none.

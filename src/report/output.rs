@@ -321,6 +321,7 @@ pub fn steady_summary(
         "rigid_wear_per_period": named(&contact.rigid_names, &state.rigid_wear),
         "edge_ends_in_contact": crate::driver::edge_ends_json(&crate::driver::steady_edge_ends(contact, state)),
         "coarse_partner_zones": crate::driver::coarse_zones_json(&contact.coarse_partner_zones(&[&state.p_plus, &state.p_minus])),
+        "target_mesh": crate::driver::target_mesh_json(contact),
         "warnings": warnings,
         "seconds": seconds,
     });
