@@ -254,6 +254,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             if wants_vtk(vtk, &p) {
                 wearfem::vtk::write_elastic(&out, &p)?;
             }
+            for w in summary["warnings"].as_array().into_iter().flatten() {
+                eprintln!("{}", w.as_str().unwrap_or_default());
+            }
             println!(
                 "{}: {} dofs, strain energy {:.9e} N·mm → {}",
                 p.file,

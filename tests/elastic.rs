@@ -237,3 +237,28 @@ fn energy_error_falls_exponentially_in_p() {
         );
     }
 }
+
+/// A probe exactly on a material interface (the compound cylinder's r = 15 mm, two materials in
+/// four arc blocks) gets one side's stress, which jumps there (σ_θ 129.3 against 42.2 MPa):
+/// the summary says so, and names both materials; probes inside one material get no warning.
+#[test]
+fn a_probe_on_a_material_interface_is_named() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/compound-cylinder.toml"
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    let problem = Problem::from_toml(&text, "compound-cylinder.toml").unwrap();
+    let summary = driver::elastic(&problem).unwrap();
+    let warnings: Vec<&str> = summary["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w.as_str().unwrap())
+        .collect();
+    assert_eq!(warnings.len(), 2, "{warnings:?}");
+    for (w, probe) in warnings.iter().zip(["r15", "r15b"]) {
+        assert!(w.contains(&format!("probe \"{probe}\"")), "{w}");
+        assert!(w.contains("interface of materials"), "{w}");
+    }
+}

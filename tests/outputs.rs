@@ -177,6 +177,54 @@ fn shape_is_the_initial_gap_plus_the_wear_and_wear_is_the_wear() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `wear.shape_zero_at` on a curved body (the pin): the shift is a vertical rigid translation
+/// of body 1, which the plate's λ_F takes up, so the pressures do not change. Along the pin's
+/// normals a vertical translation c changes the gap by c·m(x), m = −n_z; the reported wear
+/// must be the unshifted run's wear w minus the translation that makes it zero at x₀,
+/// w − (w(x₀)/m(x₀))·m (x₀ interpolated between the neighbouring points as the shift
+/// interpolates). A review found it offset by −g₀(x₀), the pin's initial gap at x₀ (12.5 µm
+/// at x₀ = 10 mm, as large as the whole wear range), so negative everywhere.
+#[test]
+fn wear_relative_to_shape_zero_at_is_zero_there_on_a_curved_body() {
+    let text = wearfem::examples::example("pin").unwrap();
+    let run = |sets: &[&str]| {
+        let sets: Vec<Override> = sets.iter().map(|s| Override::parse(s).unwrap()).collect();
+        let p = Problem::with_overrides(text, "pin", &sets).unwrap();
+        driver::wear(&p, Some(60), |_| {}).unwrap()
+    };
+    let plain = run(&["wear.record=[59]"]);
+    let shifted = run(&["wear.shape_zero_at=10.0", "wear.record=[59]"]);
+    let x: Vec<f64> = plain.contact.points.x.iter().map(|p| p[0]).collect();
+    let i = x.iter().position(|&v| v > 10.0).unwrap();
+    let s = (10.0 - x[i - 1]) / (x[i] - x[i - 1]);
+    for (a, b) in [
+        (&plain.history.shape, &shifted.history.shape),
+        (
+            &plain.history.snapshots[0].shape,
+            &shifted.history.snapshots[0].shape,
+        ),
+    ] {
+        let (wa, wb) = (plain.wear_of(a), shifted.wear_of(b));
+        let m: Vec<f64> = plain.contact.points.normal.iter().map(|n| -n[1]).collect();
+        let interpolate = |v: &[f64]| (1.0 - s) * v[i - 1] + s * v[i];
+        let c = interpolate(&wa) / interpolate(&m);
+        let range = wa.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+            - wa.iter().cloned().fold(f64::INFINITY, f64::min);
+        assert!(range > 1e-4, "the pin wore {range} mm");
+        // The two runs differ by the rigid shift alone, integrated in floating point over 60
+        // steps: 1e-9 of the range covers that round-off.
+        for (k, (u, v)) in wa.iter().zip(&wb).enumerate() {
+            assert!(
+                (u - c * m[k] - v).abs() < 1e-9 * range,
+                "point {k}: shifted wear {v}, unshifted {u} minus {c} × {}",
+                m[k]
+            );
+        }
+        let zero = (1.0 - s) * wb[i - 1] + s * wb[i];
+        assert!(zero.abs() < 1e-9 * range, "wear at x0 {zero}");
+    }
+}
+
 #[test]
 fn every_summary_says_which_build_wrote_it() {
     // Red-team review 4, N1: a stale Python wheel gave other results than the binary, and

@@ -446,6 +446,29 @@ impl Mesh {
         None
     }
 
+    /// The materials of every element that contains `x` (on an edge or vertex, several), each
+    /// once, in element order: more than one means `x` lies on a material interface, where
+    /// stresses and strains jump.
+    pub fn materials_at(&self, x: Point) -> Vec<usize> {
+        let mut materials = Vec::new();
+        for el in &self.elements {
+            let tol = 1e-9;
+            let inside = self.blocks[el.block]
+                .block
+                .inverse(x)
+                .is_some_and(|(u, v)| {
+                    u >= el.u[0] - tol
+                        && u <= el.u[1] + tol
+                        && v >= el.v[0] - tol
+                        && v <= el.v[1] + tol
+                });
+            if inside && !materials.contains(&el.material) {
+                materials.push(el.material);
+            }
+        }
+        materials
+    }
+
     /// The vertex at `x` (within 1e-6 of the mesh size), if any.
     pub fn vertex_at(&self, x: Point) -> Option<usize> {
         let tol = 1e-6 * self.bounding_size();

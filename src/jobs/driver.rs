@@ -37,6 +37,7 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
     let mut dofs = 0;
     let mut condensed = 0;
     let mut probes = serde_json::Map::new();
+    let mut warnings: Vec<String> = Vec::new();
     for b in 0..problem.spec.bodies.len() {
         let body = problem.elastic_body(b, &[])?;
         let load = problem.load_vector(b, &body, &[])?;
@@ -60,6 +61,15 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
                 )
             })?;
             probes.insert(name.clone(), json!({ "displacement": numbers(&v.displacement), "stress": numbers(&v.stress), "strain": numbers(&v.strain) }));
+            let materials = body.mesh.materials_at(probe.at);
+            if materials.len() > 1 {
+                let names: Vec<&str> = problem.spec.materials.keys().map(String::as_str).collect();
+                let name_of = |m: usize| names.get(m).copied().unwrap_or("?");
+                warnings.push(format!(
+                    "warning: {}: probe \"{name}\" at ({}, {}) lies on the interface of materials \"{}\" and \"{}\", where stress and strain jump; they are taken on \"{}\"'s side (move the probe off the interface to choose a side)",
+                    problem.file, probe.at[0], probe.at[1], name_of(materials[0]), name_of(materials[1]), name_of(materials[0])
+                ));
+            }
         }
     }
     Ok(json!({
@@ -69,6 +79,7 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
         "condensed_dofs": condensed,
         "strain_energy": number(energy),
         "probes": probes,
+        "warnings": warnings,
         "seconds": start.elapsed().as_secs_f64(),
     }))
 }
@@ -321,6 +332,8 @@ pub struct WearRun {
     pub sliding_per_half_period: f64,
     /// The last cycle against the steady state of the same problem (not in `run_seconds`).
     pub steady_check: super::steady_check::SteadyCheck,
+    /// `wear.shape_zero_at` (mm): the reported wear is relative to the wear there.
+    pub shape_zero_at: Option<f64>,
     /// The run's warnings ([`run_warnings`]), made on first use by [`WearRun::warnings`].
     warnings: std::sync::OnceLock<Vec<String>>,
 }
@@ -401,6 +414,7 @@ pub fn wear(
         records_past_end,
         sliding_per_half_period: integrator.sliding_per_half_period(),
         steady_check,
+        shape_zero_at: spec.shape_zero_at,
         warnings: std::sync::OnceLock::new(),
     })
 }
@@ -413,14 +427,10 @@ impl WearRun {
     }
 
     /// The wear in `shape` (a shape of this run, mm): `shape` minus the initial gap (the
-    /// bodies' geometric gap and `contact.initial_shape`), so 0 where nothing was worn
-    /// (after a shift by `wear.shape_zero_at`, relative to the worn depth there), mm.
+    /// bodies' geometric gap and `contact.initial_shape`), so 0 where nothing was worn; with
+    /// `wear.shape_zero_at`, relative to the wear there ([`crate::wear::wear_of_shape`]).
     pub fn wear_of(&self, shape: &[f64]) -> Vec<f64> {
-        shape
-            .iter()
-            .zip(&self.contact.points.initial_gap)
-            .map(|(g, g0)| g - g0)
-            .collect()
+        crate::wear::wear_of_shape(&self.contact.points, shape, self.shape_zero_at)
     }
 
     /// Whether every step slid the same way (monotonic sliding, or a one-step run).

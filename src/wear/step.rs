@@ -595,7 +595,7 @@ fn shift_to_zero(shape: &mut [f64], weights: &[(usize, f64)], points: &ContactPo
 }
 
 /// Linear interpolation weights of the contact points at x = `x0` (nearest pair along x).
-fn interpolation_weights(points: &ContactPoints, x0: f64) -> Vec<(usize, f64)> {
+pub(crate) fn interpolation_weights(points: &ContactPoints, x0: f64) -> Vec<(usize, f64)> {
     let xs: Vec<f64> = points.x.iter().map(|p| p[0]).collect();
     for i in 0..xs.len().saturating_sub(1) {
         let (a, b) = (xs[i], xs[i + 1]);
@@ -608,6 +608,23 @@ fn interpolation_weights(points: &ContactPoints, x0: f64) -> Vec<(usize, f64)> {
         .min_by(|&i, &j| (xs[i] - x0).abs().total_cmp(&(xs[j] - x0).abs()))
         .unwrap_or(0);
     vec![(nearest, 1.0)]
+}
+
+/// The wear in `shape` (a shape of a run, mm): `shape` minus the initial gap (the bodies'
+/// geometric gap and `contact.initial_shape`), positive where material was removed. With
+/// `zero_at` (`wear.shape_zero_at`, mm) it is shifted by the same vertical rigid translation
+/// of body 1 as the shape is, but so that the *wear* is zero at x₀: the shape's own shift
+/// makes the shape zero there, which on a curved body leaves the wear at −g₀(x₀).
+pub fn wear_of_shape(points: &ContactPoints, shape: &[f64], zero_at: Option<f64>) -> Vec<f64> {
+    let mut wear: Vec<f64> = shape
+        .iter()
+        .zip(&points.initial_gap)
+        .map(|(g, g0)| g - g0)
+        .collect();
+    if let Some(x0) = zero_at {
+        shift_to_zero(&mut wear, &interpolation_weights(points, x0), points);
+    }
+    wear
 }
 
 /// Set the look-ahead of a first half cycle: k times the last second half cycle's wear of

@@ -114,12 +114,8 @@ pub fn write_contact_states(
                     .map_or([0.0; 2], |v| v.displacement)
             })
             .collect();
-        let wear: Vec<f64> = state
-            .shape
-            .iter()
-            .zip(&contact.points.initial_gap)
-            .map(|(g, g0)| g - g0)
-            .collect();
+        let zero_at = problem.spec.wear.as_ref().and_then(|w| w.shape_zero_at);
+        let wear = crate::wear::wear_of_shape(&contact.points, &state.shape, zero_at);
         let mut values = vec![
             ("pressure", &solution.pressure[..]),
             ("gap", &solution.gap[..]),
