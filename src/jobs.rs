@@ -2,6 +2,7 @@
 
 pub mod driver;
 pub mod json;
+mod run;
 pub mod steady_check;
 pub mod sweep;
 pub mod validate;

@@ -9,10 +9,11 @@ use crate::contact::CondensedContact;
 use crate::fields::strain_energy;
 use crate::jobs::json::{number, numbers};
 use crate::problem::{Problem, ProblemError};
-use crate::wear::{WearHistory, WearIntegrator};
+use crate::wear::WearIntegrator;
 use serde_json::{json, Value};
 use std::time::Instant;
 
+pub use super::run::{wear, WearRun};
 pub use super::warnings::{
     coarse_zones_json, edge_ends_json, edge_ends_warning, model_warnings, penalty_warning,
     run_warnings, steady_edge_ends, steady_warnings, target_mesh_json, target_mesh_note,
@@ -193,7 +194,10 @@ pub fn check_contact_probes(
 
 /// `wear.shape_zero_at` must lie within the x range of the contact points: outside it, the
 /// shift would be taken at the nearest point, not where the file says.
-fn check_shape_zero(problem: &Problem, contact: &CondensedContact) -> Result<(), ProblemError> {
+pub(super) fn check_shape_zero(
+    problem: &Problem,
+    contact: &CondensedContact,
+) -> Result<(), ProblemError> {
     let Some(x0) = problem.spec.wear.as_ref().and_then(|w| w.shape_zero_at) else {
         return Ok(());
     };
@@ -309,270 +313,6 @@ pub fn pressure_at_one_end(pressure: &[f64]) -> Option<&'static str> {
         [0] => Some("first"),
         [i] if i == n - 1 => Some("last"),
         _ => None,
-    }
-}
-
-/// A finished wear run with its set-up.
-pub struct WearRun {
-    /// The condensed contact problem.
-    pub contact: CondensedContact,
-    /// Step history and final profiles.
-    pub history: WearHistory,
-    /// Probe names and their contact point indices.
-    pub probes: Vec<(String, usize)>,
-    /// Seconds spent on the FE set-up and condensation.
-    pub setup_seconds: f64,
-    /// Seconds spent integrating.
-    pub run_seconds: f64,
-    /// Steps of `wear.record` that were not recorded because the run ended before them: past
-    /// the end of a run shortened by the `steps` argument, or after the last completed step of
-    /// a run that stopped early (an adaptive run at the steady state, a failed solve).
-    pub records_past_end: Vec<usize>,
-    /// Sliding distance of one half period (monotonic: of one step unit), mm.
-    pub sliding_per_half_period: f64,
-    /// The last cycle against the steady state of the same problem (not in `run_seconds`).
-    pub steady_check: super::steady_check::SteadyCheck,
-    /// `wear.shape_zero_at` (mm): the reported wear is relative to the wear there.
-    pub shape_zero_at: Option<f64>,
-    /// The run's warnings ([`run_warnings`]), made on first use by [`WearRun::warnings`].
-    warnings: std::sync::OnceLock<Vec<String>>,
-}
-
-/// Run the wear integration of `problem` (optionally overriding the number of steps).
-pub fn wear(
-    problem: &Problem,
-    steps: Option<usize>,
-    on_step: impl FnMut(&crate::wear::StepRecord),
-) -> Result<WearRun, JobError> {
-    let spec = problem
-        .spec
-        .wear
-        .clone()
-        .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
-    let mut spec = spec;
-    let mut records_past_end = Vec::new();
-    if let Some(n) = steps {
-        // `steps` replaces the file's duration; the snapshots it asks for past the new end are
-        // reported in the result (`WearRun::records_past_end`), not dropped in silence.
-        spec.steps = n;
-        spec.cycles = None;
-        spec.distance = None;
-        records_past_end = spec.record.iter().copied().filter(|&r| r > n).collect();
-        spec.record.retain(|&r| r <= n);
-    }
-    let mut integrator =
-        WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
-    integrator.first_direction = direction(problem)?;
-    let plate_moves = problem
-        .spec
-        .plate
-        .as_ref()
-        .is_some_and(|p| p.motion != "fixed");
-    if spec.shape_zero_at.is_some() && !plate_moves {
-        // The shift is a vertical rigid translation of the punch, which only leaves the
-        // pressures unchanged if the plate can take it up through λ_F.
-        return Err(problem
-            .error(
-                "wear.shape_zero_at",
-                "shifting the shape needs a plate that moves vertically (plate.motion = \"vertical\" or \"vertical_rotation\"); remove the key or free the plate",
-            )
-            .into());
-    }
-    let start = Instant::now();
-    let (contact, _, _) = CondensedContact::build(problem)?;
-    check_contact_probes(problem, &contact)?;
-    check_shape_zero(problem, &contact)?;
-    let mut solver = ContactSolver::new(&contact, method(problem)?);
-    let setup_seconds = start.elapsed().as_secs_f64();
-    let probes = contact_probes(problem, &contact);
-    let probe_index: Vec<usize> = probes.iter().map(|p| p.1).collect();
-    let start = Instant::now();
-    let history = integrator.run(
-        &mut solver,
-        &contact,
-        &contact.points.initial_gap,
-        &probe_index,
-        on_step,
-    );
-    let run_seconds = start.elapsed().as_secs_f64();
-    if history.stopped.is_some() {
-        // A run that ended before its last step (an adaptive run at the steady state, or a
-        // failed solve) did not reach the snapshots asked for after its last completed step:
-        // listed like those past a shortened run's end, not dropped in silence.
-        let last = history.steps.last().map_or(0, |s| s.step);
-        records_past_end.extend(spec.record.iter().copied().filter(|&r| r > last));
-        records_past_end.sort_unstable();
-        records_past_end.dedup();
-    }
-    let steady_check = super::steady_check::check(&contact, &integrator, &history);
-    Ok(WearRun {
-        contact,
-        history,
-        probes,
-        setup_seconds,
-        run_seconds,
-        records_past_end,
-        sliding_per_half_period: integrator.sliding_per_half_period(),
-        steady_check,
-        shape_zero_at: spec.shape_zero_at,
-        warnings: std::sync::OnceLock::new(),
-    })
-}
-
-impl WearRun {
-    /// Every warning about this run ([`run_warnings`]; its checks cost a few contact solves,
-    /// made once): the console's warning lines and summary.json's `warnings`.
-    pub fn warnings(&self, problem: &Problem) -> &[String] {
-        self.warnings.get_or_init(|| run_warnings(problem, self))
-    }
-
-    /// The wear in `shape` (a shape of this run, mm): `shape` minus the initial gap (the
-    /// bodies' geometric gap and `contact.initial_shape`), so 0 where nothing was worn; with
-    /// `wear.shape_zero_at`, relative to the wear there ([`crate::wear::wear_of_shape`]).
-    pub fn wear_of(&self, shape: &[f64]) -> Vec<f64> {
-        crate::wear::wear_of_shape(&self.contact.points, shape, self.shape_zero_at)
-    }
-
-    /// Whether every step slid the same way (monotonic sliding, or a one-step run).
-    pub fn is_monotonic(&self) -> bool {
-        let h = &self.history.steps;
-        h.windows(2).all(|w| w[0].direction == w[1].direction)
-    }
-
-    /// Why `steady_distance.summed_pressure` (the spread of p⁺ + p⁻ over the points in
-    /// contact in both half cycles of the last cycle) means nothing for this run, if it does
-    /// not: monotonic sliding has one half cycle (and no δw either, eq. 40 compares the two),
-    /// and with fewer than two points in contact in both half cycles the spread is 0 whatever
-    /// the state (red-team review 4, F6).
-    pub fn summed_pressure_unavailable(&self) -> Option<String> {
-        if self.is_monotonic() {
-            return Some(
-                "monotonic sliding has one half cycle per period: no p⁺ + p⁻ and no δw".into(),
-            );
-        }
-        let h = &self.history;
-        let both = h
-            .p_plus
-            .iter()
-            .zip(&h.p_minus)
-            .filter(|(a, b)| **a > 0.0 && **b > 0.0)
-            .count();
-        (both < 2).then(|| {
-            format!("{both} contact point(s) carry pressure in both half cycles of the last cycle: no spread of p⁺ + p⁻ to measure")
-        })
-    }
-
-    /// The edge ends in contact in the last cycle of the run (either half cycle).
-    pub fn edge_ends(&self) -> Vec<crate::contact::EdgeEnd> {
-        self.contact
-            .edge_ends_in_contact(&[&self.history.p_plus, &self.history.p_minus])
-    }
-
-    /// The summary JSON of the run.
-    pub fn summary(&self, problem: &Problem) -> Value {
-        let h = &self.history;
-        let monotonic = self.is_monotonic();
-        let steps: Vec<Value> = h
-            .steps
-            .iter()
-            .map(|s| {
-                let probes: serde_json::Map<String, Value> = self.probes.iter().zip(&s.probes).map(|((n, _), v)| (n.clone(), number(*v))).collect();
-                {
-                    let mut step = json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "k": s.k, "iterations": s.iterations, "solves": s.solves, "criterion": number(s.criterion), "dissipation": number(s.dissipation), "delta_w": number(s.delta_w), "probes": probes });
-                    if monotonic {
-                        // δw compares the two half cycles of a period: none in one direction.
-                        step.as_object_mut().map(|o| o.remove("delta_w"));
-                    }
-                    step
-                }
-            })
-            .collect();
-        let p_sum: Vec<f64> = h
-            .p_plus
-            .iter()
-            .zip(&h.p_minus)
-            .map(|(a, b)| a + b)
-            .collect();
-        let half_periods = h.steps.last().map_or(0, |s| s.half_period);
-        let mut summary = json!({
-            "title": problem.spec.title,
-            "wearfem_version": crate::VERSION,
-            "points": self.contact.len(),
-            "steps": steps,
-            "final": {
-                "x": self.contact.points.x.iter().map(|p| number(p[0])).collect::<Vec<_>>(),
-                "p_plus": numbers(&h.p_plus),
-                "p_minus": numbers(&h.p_minus),
-                "p_sum": numbers(&p_sum),
-                "shape": numbers(&h.shape),
-                "wear": numbers(&self.wear_of(&h.shape)),
-            },
-            "snapshots": h.snapshots.iter().map(|s| json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "pressure": numbers(&s.pressure), "shape": numbers(&s.shape), "wear": numbers(&self.wear_of(&s.shape)) })).collect::<Vec<_>>(),
-            "edge_ends_in_contact": edge_ends_json(&self.edge_ends()),
-            "coarse_partner_zones": coarse_zones_json(&self.contact.coarse_partner_zones(&[&h.p_plus, &h.p_minus])),
-            "target_mesh": target_mesh_json(&self.contact),
-            "solves": h.solves,
-            "failed_solves": h.failed_solves,
-            "unconverged_steps": h.unconverged_steps,
-            "oscillating_steps": h.oscillating_steps,
-            "warnings": self.warnings(problem),
-            "setup_seconds": self.setup_seconds,
-            "run_seconds": self.run_seconds,
-            "sliding_distance_m": number(half_periods as f64 * self.sliding_per_half_period / 1000.0),
-        });
-        if monotonic {
-            // One direction only: there is no '−' pressure and no sum of the two.
-            if let Some(f) = summary["final"].as_object_mut() {
-                f.remove("p_minus");
-                f.remove("p_sum");
-            }
-        }
-        if !self.records_past_end.is_empty() {
-            summary["records_past_end"] = json!(self.records_past_end);
-        }
-        match &h.steady_distance {
-            Some(d) => {
-                use super::steady_check::SteadyCheck;
-                let (pressure, check) = match &self.steady_check {
-                    SteadyCheck::Compared { pressure, .. } => {
-                        (number(*pressure), json!("compared"))
-                    }
-                    SteadyCheck::Unavailable(why) => (Value::Null, json!(why)),
-                    SteadyCheck::NoCycle => (Value::Null, json!("no complete cycle")),
-                };
-                summary["steady_distance"] = json!({
-                    "pressure": pressure,
-                    "wear": number(d.wear),
-                    "delta_w": number(d.delta_w),
-                    "summed_pressure": number(d.summed_pressure),
-                });
-                if let Some(why) = self.summed_pressure_unavailable() {
-                    // Both compare the two half cycles of a period; a spread over fewer than
-                    // two points is 0 whatever the state. Null, not a number that reads as
-                    // "steady".
-                    let sd = &mut summary["steady_distance"];
-                    sd["summed_pressure"] = Value::Null;
-                    sd["summed_pressure_note"] = json!(why);
-                    if monotonic {
-                        sd["delta_w"] = Value::Null;
-                    }
-                }
-                summary["steady_check"] = check;
-                summary["steady_reached"] = json!(self.steady_check.reached(h));
-            }
-            None => {
-                // No full cycle: the profiles of `final` are not results.
-                if let Some(map) = summary.as_object_mut() {
-                    map.remove("final");
-                }
-            }
-        }
-        if let Some((step, reason)) = &h.stopped {
-            // Only present when the run ended early: at this step, for this reason.
-            summary["stopped_at_step"] = json!(step);
-            summary["stop_reason"] = json!(reason.to_string());
-        }
-        summary
     }
 }
 
