@@ -18,10 +18,11 @@ mod outcome;
 mod schemes;
 mod step;
 mod workspace;
+mod zero_shift;
 pub use adaptive::{AdaptiveMethod, AdaptiveSpec};
 pub use outcome::{non_rigid_part, steady_distance, SteadyDistance, StopReason};
 use serde::{Deserialize, Serialize};
-pub use step::wear_of_shape;
+pub use zero_shift::wear_of_shape;
 
 /// Wear law parameters of one body: ẇ = β̃ pᵇ vᵃ (mm/s with p in MPa and v in mm/s). A file
 /// may give Archard's k or K with a hardness instead of β̃ ([`crate::wear_units`]).
