@@ -353,6 +353,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     .collect(),
                 None => vec!["no steps".to_string()],
             };
+            let probe_text = if probe_text.is_empty() {
+                vec!["no probes".to_string()]
+            } else {
+                probe_text
+            };
             if let Some(note) = driver::target_mesh_note(&p, &result.contact) {
                 println!("{note}");
             }

@@ -55,7 +55,7 @@ pub fn target_mesh_note(problem: &Problem, contact: &CondensedContact) -> Option
     let t = contact.target_mesh;
     (t.lines_added > 0).then(|| {
         format!(
-            "note: {}: {} mesh lines added to body \"{}\" under the element ends of \"{}\"'s contact edge ({} elements now; contact.align_target_mesh = false keeps its mesh as given)",
+            "note: {}: {} mesh lines (counted per block) added to body \"{}\" under the element ends of \"{}\"'s contact edge ({} elements now; contact.align_target_mesh = false keeps its mesh as given)",
             problem.file, t.lines_added, c.target_body, c.body, t.elements
         )
     })
