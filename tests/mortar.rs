@@ -820,9 +820,15 @@ fn the_summary_counts_the_lines_added_to_body_2() {
     let lines = |p: &Problem| {
         let (summary, ..) = wearfem::driver::contact(p).unwrap();
         let t = &summary["target_mesh"];
-        (t["lines_added"].as_u64().unwrap(), t["elements"].as_u64().unwrap())
+        (
+            t["lines_added"].as_u64().unwrap(),
+            t["elements"].as_u64().unwrap(),
+        )
     };
     assert_eq!(lines(&punch_with(Strip::Even(12), "mortar", true)), (8, 80));
-    assert_eq!(lines(&punch_with(Strip::Even(12), "mortar", false)), (0, 48));
+    assert_eq!(
+        lines(&punch_with(Strip::Even(12), "mortar", false)),
+        (0, 48)
+    );
     assert_eq!(lines(&punch_with(Strip::Matched, "mortar", true)), (0, 48));
 }
