@@ -353,6 +353,9 @@ impl Problem {
             let key = match &e {
                 MeshError::BadLines {
                     block, direction, ..
+                }
+                | MeshError::Thin {
+                    block, direction, ..
                 } => format!("bodies[{b}].blocks[{block}].{direction}"),
                 MeshError::Overlap { block }
                 | MeshError::Disconnected { block }

@@ -22,10 +22,16 @@
 //! `cycles` (reciprocating: 2 half periods each) or `distance` (m of sliding: 2u₀ per half
 //! period; monotonic: v · `step_time` per step unit), rounded to the nearest whole half period
 //! (step unit). The steps are then those of the schedule that cover exactly that many half
-//! periods: the last step's k is cut down to the remainder when the schedule would overshoot.
+//! periods. Monotonic: the last step's k is cut down to the remainder when the schedule would
+//! overshoot. Reciprocating: steps alternate between the two directions and a step with factor
+//! k stands for k half periods of its own, so the cut keeps the directions balanced (⌈H/2⌉
+//! half periods in the first, ⌊H/2⌋ back; with the paper's schedule the last pair gets ⌈R/2⌉
+//! and ⌊R/2⌋ of the R left, see [`steps_for`]). Cutting only the last step's k would leave up
+//! to k − 1 more half periods in one direction than in the other, and the worn profile skewed.
+//! `[wear.adaptive]` chooses k itself: it takes `steps` only.
 
 use crate::kinematics::{factor, paper_schedule, ScheduleEntry};
-use crate::wear::{WearLaw, WearSpec, MAX_STEPS};
+use crate::wear::{WearLaw, WearSpec, MAX_FACTOR, MAX_STEPS};
 use serde::Deserialize;
 
 /// A wear law as written in a problem file: one of `beta`, `k`, or `K` with `hardness`.
@@ -163,13 +169,32 @@ pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
             format!("must give at least one half period (and at most 1e12), got {value}"),
         );
     }
+    if spec.adaptive.is_some() {
+        // The controller chooses k itself and the run ends at the steady state; a schedule
+        // cut to a duration has nothing to cut.
+        return bad(
+            key,
+            "[wear.adaptive] chooses k itself and stops at the steady state: give the most steps it may take as wear.steps".into(),
+        );
+    }
     let schedule = spec.extrapolation.clone().unwrap_or_else(paper_schedule);
-    let (steps, schedule) = steps_for(half_periods as u64, &schedule).ok_or_else(|| {
-        (
-            format!("wear.{key}"),
-            format!("{value} needs more than {MAX_STEPS} steps with this extrapolation schedule"),
-        )
-    })?;
+    let (steps, schedule) =
+        steps_for(half_periods as u64, &schedule, !monotonic).ok_or_else(|| {
+            (
+                format!("wear.{key}"),
+                format!(
+                    "{value} needs more than {MAX_STEPS} steps with this extrapolation schedule"
+                ),
+            )
+        })?;
+    if let Some(e) = schedule.iter().find(|e| e.k > MAX_FACTOR) {
+        // Only a schedule whose k alternates unevenly between the directions gets here: the
+        // last step takes all its direction still needs.
+        return bad(
+            key,
+            format!("the last step would need k = {} > {MAX_FACTOR} to balance the two directions with this extrapolation schedule", e.k),
+        );
+    }
     Ok(WearSpec {
         steps,
         extrapolation: Some(schedule),
@@ -178,41 +203,66 @@ pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
 }
 
 /// The number of steps whose factors sum to exactly `half_periods`, and the schedule that
-/// does it (`schedule` itself, its last step's k cut to the remainder if needed); `None` past
-/// [`MAX_STEPS`]. Entries with a bad k are left for the validation to report.
+/// does it (`schedule` itself when no step needs cutting); `None` past [`MAX_STEPS`]. Entries
+/// with a bad k are left for the validation to report.
+///
+/// Monotonic sliding (`alternating` false): steps as scheduled, the last one's k cut to the
+/// remainder. Reciprocating (`alternating` true): odd steps slide in the first direction and
+/// even ones back, and a step with factor k stands for k half periods of its own direction,
+/// so of H half periods ⌈H/2⌉ must be first-direction steps' and ⌊H/2⌋ the others'. Each
+/// step's k is cut to what its direction still needs, and when one direction is done, the
+/// other's next step (the last) takes all it still needs. With a schedule whose k changes only
+/// after even steps (the paper's) only the last pair is cut: with R < 2k half periods left,
+/// its steps get ⌈R/2⌉ and ⌊R/2⌋ (a single step when R = 1).
 pub fn steps_for(
     half_periods: u64,
     schedule: &[ScheduleEntry],
+    alternating: bool,
 ) -> Option<(usize, Vec<ScheduleEntry>)> {
-    let mut done = 0u64;
+    // Half periods still due in the first direction (odd steps) and in the other (even ones).
+    let mut due = if alternating {
+        [half_periods.div_ceil(2), half_periods / 2]
+    } else {
+        [half_periods, 0]
+    };
+    let mut factors: Vec<u64> = Vec::new();
+    let mut cut = false;
     for n in 1..=MAX_STEPS {
-        let k = factor(schedule, n).max(1) as u64;
-        if done + k >= half_periods {
-            let last = half_periods - done;
-            if last == k {
+        let scheduled = factor(schedule, n).max(1) as u64;
+        let (own, other) = if alternating && n % 2 == 0 {
+            (1, 0)
+        } else {
+            (0, 1)
+        };
+        let k = if alternating && due[other] == 0 {
+            // The last step: the other direction is done.
+            due[own]
+        } else {
+            due[own].min(scheduled)
+        };
+        cut |= k != scheduled;
+        due[own] -= k;
+        factors.push(k);
+        if due == [0, 0] {
+            if !cut {
                 return Some((n, schedule.to_vec()));
             }
-            // Steps 1 … n−1 as scheduled, then step n with the remainder.
-            let mut cut: Vec<ScheduleEntry> = (1..n)
-                .map(|m| ScheduleEntry {
-                    until: Some(m),
-                    k: factor(schedule, m),
-                })
-                .collect();
-            cut.dedup_by(|later, earlier| {
-                let same = later.k == earlier.k;
-                if same {
-                    earlier.until = later.until;
+            // The factors step by step, as entries (runs of equal k); the last one open.
+            let mut entries: Vec<ScheduleEntry> = Vec::new();
+            for (m, &k) in factors.iter().enumerate() {
+                match entries.last_mut() {
+                    Some(e) if e.k as u64 == k => e.until = Some(m + 1),
+                    _ => entries.push(ScheduleEntry {
+                        until: Some(m + 1),
+                        k: usize::try_from(k).unwrap_or(usize::MAX),
+                    }),
                 }
-                same
-            });
-            cut.push(ScheduleEntry {
-                until: None,
-                k: last as usize,
-            });
-            return Some((n, cut));
+            }
+            if let Some(last) = entries.last_mut() {
+                last.until = None;
+            }
+            return Some((n, entries));
         }
-        done += k;
     }
     None
 }
@@ -273,15 +323,118 @@ mod tests {
     /// k = 10. 16 300 half periods (8150 cycles) are step 100 + 1600 = 1700, the paper's run.
     #[test]
     fn cycles_to_steps_with_the_paper_schedule() {
-        let (n, schedule) = steps_for(16_300, &paper_schedule()).unwrap();
+        let (n, schedule) = steps_for(16_300, &paper_schedule(), true).unwrap();
         assert_eq!(n, 1700);
         assert_eq!(schedule, paper_schedule());
-        // 303 half periods: step 100 ends at 300, step 101 would end at 310: cut to k = 3.
-        let (n, schedule) = steps_for(303, &paper_schedule()).unwrap();
+        // 303 half periods: step 100 ends at 300, the pair 101–102 would end at 320. The 3 left
+        // are 2 '+' and 1 '−' half periods: 152 and 151 in all (303 = 2 · 151 + 1).
+        let (n, schedule) = steps_for(303, &paper_schedule(), true).unwrap();
+        assert_eq!(n, 102);
+        assert_eq!(factor(&schedule, 101), 2);
+        assert_eq!(factor(&schedule, 102), 1);
+        assert_eq!((1..=100).map(|m| factor(&schedule, m)).sum::<usize>(), 300);
+        // 333 (distance = 1 m at u₀ = 1.5 mm): step 102 ends at 320, then 7 '+' and 6 '−'
+        // (167 and 166), not '+' 10 and '−' 3 (170 and 163).
+        let (n, schedule) = steps_for(333, &paper_schedule(), true).unwrap();
+        assert_eq!(n, 104);
+        assert_eq!((factor(&schedule, 103), factor(&schedule, 104)), (7, 6));
+        // Monotonic sliding has one direction: the last step takes the remainder.
+        let (n, schedule) = steps_for(303, &paper_schedule(), false).unwrap();
         assert_eq!(n, 101);
-        let total: usize = (1..=n).map(|m| factor(&schedule, m)).sum();
-        assert_eq!(total, 303);
         assert_eq!(factor(&schedule, 101), 3);
+    }
+
+    /// The half periods of each direction, from the steps' factors (odd steps the first
+    /// direction): reciprocating sliding over H half periods slides ⌈H/2⌉ of them in the first
+    /// direction and ⌊H/2⌋ back, whatever the schedule. Also: the factors sum to H, a
+    /// schedule whose k changes only after even steps is never raised, only its last pair cut
+    /// (to ⌈R/2⌉ and ⌊R/2⌋ of the R left), and the schedule is returned as given when nothing
+    /// is cut.
+    #[test]
+    fn a_duration_keeps_the_two_directions_balanced() {
+        let entry = |until, k| ScheduleEntry { until, k };
+        let schedules = [
+            (paper_schedule(), true),
+            (vec![entry(Some(2), 1), entry(None, 7)], true),
+            (vec![entry(None, 1)], true),
+            (
+                vec![entry(Some(4), 3), entry(Some(10), 1), entry(None, 6)],
+                true,
+            ),
+            // k changes after odd steps: pairs are unequal even as scheduled.
+            (vec![entry(Some(1), 1), entry(None, 7)], false),
+            (vec![entry(Some(3), 7), entry(None, 1)], false),
+            (
+                vec![entry(Some(1), 5), entry(Some(2), 1), entry(None, 4)],
+                false,
+            ),
+        ];
+        for (schedule, even_pairs) in &schedules {
+            for h in 1..=700u64 {
+                let (n, cut) = steps_for(h, schedule, true).unwrap();
+                let k: Vec<u64> = (1..=n).map(|m| factor(&cut, m) as u64).collect();
+                let first: u64 = k.iter().step_by(2).sum();
+                let back: u64 = k.iter().skip(1).step_by(2).sum();
+                assert_eq!(
+                    (first, back),
+                    (h.div_ceil(2), h / 2),
+                    "H = {h}, {schedule:?}: {k:?}"
+                );
+                assert!(k.iter().all(|&k| k >= 1), "H = {h}: {k:?}");
+                if *even_pairs {
+                    // Before the last pair (or the last single step) as scheduled, then the
+                    // R left split ⌈R/2⌉, ⌊R/2⌋ (R = 1: one step).
+                    let last = if n % 2 == 0 { n - 2 } else { n - 1 };
+                    for m in 1..=last {
+                        assert_eq!(k[m - 1], factor(schedule, m) as u64, "H = {h}: {k:?}");
+                    }
+                    let r = h - k[..last].iter().sum::<u64>();
+                    if n % 2 == 0 {
+                        assert_eq!((k[n - 2], k[n - 1]), (r.div_ceil(2), r / 2), "H = {h}");
+                    } else {
+                        assert_eq!(r, 1, "H = {h}: {k:?}");
+                    }
+                    assert!(r <= 2 * factor(schedule, last + 1) as u64, "H = {h}: {k:?}");
+                }
+                if k.iter()
+                    .enumerate()
+                    .all(|(m, &k)| k == factor(schedule, m + 1) as u64)
+                {
+                    assert_eq!(&cut, schedule, "H = {h}");
+                }
+            }
+        }
+    }
+
+    /// Monotonic sliding: the factors sum to H and only the last step is cut.
+    #[test]
+    fn a_monotonic_duration_cuts_the_last_step() {
+        for h in 1..=500u64 {
+            let (n, cut) = steps_for(h, &paper_schedule(), false).unwrap();
+            let k: Vec<u64> = (1..=n).map(|m| factor(&cut, m) as u64).collect();
+            assert_eq!(k.iter().sum::<u64>(), h);
+            for m in 1..n {
+                assert_eq!(k[m - 1], factor(&paper_schedule(), m) as u64);
+            }
+            assert!(k[n - 1] <= factor(&paper_schedule(), n) as u64);
+        }
+    }
+
+    /// `[wear.adaptive]` chooses k itself: a duration is an error naming the key, not the
+    /// schedule it would have been turned into.
+    #[test]
+    fn adaptive_runs_take_steps_only() {
+        let text = crate::examples::example("punch-b40").unwrap();
+        let mut spec = toml::from_str::<crate::schema::ProblemSpec>(text)
+            .unwrap()
+            .wear
+            .unwrap();
+        spec.steps = 0;
+        spec.cycles = Some(100.0);
+        spec.adaptive = Some(toml::from_str("method = \"bdf2\"").unwrap());
+        let (key, message) = resolve_duration(&spec).unwrap_err();
+        assert_eq!(key, "wear.cycles");
+        assert!(message.contains("wear.steps"), "{message}");
     }
 
     #[test]
