@@ -29,7 +29,7 @@ pub mod zone;
 use flexibility::add_flexibility;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
-pub use resolution::{CoarseZone, PointResolution, UnmatchedLine};
+pub use resolution::{CoarseZone, PointResolution, SizeJump, UnmatchedLine};
 pub use spec::{CircleShape, ContactSpec, PlateSpec};
 pub use zone::EdgeEnd;
 
@@ -85,6 +85,9 @@ pub struct CondensedContact {
     /// Collocation only: the lines of body 2 inside one of body 1's contact elements (where
     /// one-point partners make the pressure oscillate); empty for matched lines and for mortar.
     pub unmatched_lines: Vec<UnmatchedLine>,
+    /// Vertices of body 1's contact edge where the element length jumps by more than
+    /// [`resolution::SIZE_JUMP`] (see [`CondensedContact::size_jump_in_contact`]).
+    pub size_jumps: Vec<SizeJump>,
     /// Mesh lines added to body 2 under body 1's element ends (`contact.align_target_mesh`,
     /// [`crate::mesh::Mesh::aligned_to`]), and body 2's element count with them.
     pub target_mesh: TargetMesh,
@@ -450,6 +453,7 @@ impl CondensedContact {
         }
         let resolution =
             resolution::point_resolution(body1, &chain, body2, &edge2, &points.x, &points.normal);
+        let size_jumps = resolution::size_jumps(body1, &chain, &points.x);
         let unmatched_lines = if c.discretisation == "collocation" {
             resolution::unmatched_lines(body1, &chain, body2, &edge2)
         } else {
@@ -482,6 +486,7 @@ impl CondensedContact {
                 elements: body2.mesh.elements.len(),
             },
             unmatched_lines,
+            size_jumps,
         };
         Ok(contact)
     }
@@ -568,6 +573,13 @@ impl CondensedContact {
     /// any of `pressures` ([x, z], mm), where the pressure oscillates.
     pub fn unmatched_line_in_contact(&self, pressures: &[&[f64]]) -> Option<Point> {
         resolution::unmatched_in_contact(&self.unmatched_lines, pressures)
+    }
+
+    /// A vertex of body 1's contact edge where the element length jumps by more than
+    /// [`resolution::SIZE_JUMP`] and one of the two elements is in contact in any of
+    /// `pressures`: a pressure there can dip far below its neighbours.
+    pub fn size_jump_in_contact(&self, pressures: &[&[f64]]) -> Option<SizeJump> {
+        resolution::size_jump_in_contact(&self.size_jumps, pressures)
     }
 
     /// Whether there are no contact points.

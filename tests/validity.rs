@@ -292,3 +292,46 @@ fn linear_elements_in_contact_are_named() {
         "p = 2: {error:.4} off, named {named}"
     );
 }
+
+/// A review's punch cut into elements of 18, 0.6, 11.4 and 30 mm (a 30 : 1 step at x = 1088):
+/// one contact point's pressure falls to about 40 % of its neighbours' mean, on a strip of 200
+/// even elements (body 2 is not the cause). The contact summary names the step; the shipped
+/// punch (8 equal elements) and a 6 : 1 step (the review saw no dip there) are not named.
+#[test]
+fn a_steep_step_in_body_1s_element_lengths_is_named() {
+    let solve = |u: &str| {
+        let sets = [
+            format!("bodies[0].blocks[0].u={u}"),
+            format!("bodies[0].blocks[1].u={u}"),
+            "bodies[1].blocks[0].u=200".to_string(),
+            "contact.discretisation=mortar".to_string(),
+        ];
+        let sets: Vec<&str> = sets.iter().map(String::as_str).collect();
+        driver::contact(&builtin("punch-b40", &sets)).unwrap().0
+    };
+    let named = |summary: &serde_json::Value| {
+        summary["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w.as_str().unwrap().contains("change length by"))
+    };
+    let steep = solve("[0.0, 0.3, 0.31, 0.5, 1.0]");
+    let p: Vec<f64> = steep["pressure"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    let dip = (1..p.len() - 1)
+        .map(|i| p[i] / (0.5 * (p[i - 1] + p[i + 1])))
+        .fold(f64::INFINITY, f64::min);
+    // Away from the corners the flat punch's pressure is smooth: no point below 90 % of its
+    // neighbours' mean. The steep step's dip is far below that (0.41 measured).
+    assert!(dip < 0.6, "smallest ratio to the neighbours' mean {dip}");
+    assert!(named(&steep));
+    let gentle = solve("[0.0, 0.3, 0.35, 0.5, 1.0]");
+    assert!(!named(&gentle), "6 : 1 named: {}", gentle["warnings"]);
+    let shipped = driver::contact(&builtin("punch-b40", &[])).unwrap().0;
+    assert!(!named(&shipped));
+}

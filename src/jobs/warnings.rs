@@ -118,6 +118,12 @@ pub fn zone_warnings(
             problem.file
         ));
     }
+    if let Some(j) = contact.size_jump_in_contact(pressures) {
+        warnings.push(format!(
+            "warning: {}: body 1's contact elements change length by {:.0} : 1 at ({:.4}, {:.4}), inside the contact: pressures next to such a step can dip far below their neighbours (57 % at one point with a 30 : 1 step). Grade the elements towards it by at most {:.0} : 1 from one to the next",
+            problem.file, j.ratio, j.x[0], j.x[1], crate::contact::resolution::SIZE_JUMP
+        ));
+    }
     if let Some(x) = contact.unmatched_line_in_contact(pressures) {
         warnings.push(format!(
             "warning: {}: contact.discretisation = \"collocation\" with a line of body 2 inside one of body 1's contact elements (at ({:.4}, {:.4})): one-point partners make the pressure oscillate there by several percent of its peak. Use the default \"mortar\", or match body 2's mesh lines to body 1's",
