@@ -243,6 +243,84 @@ pub(crate) fn one_line(message: &str) -> String {
     message.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
+/// The dotted key (`--set` syntax) of the `key = value` on line `line` (1-based) of a problem
+/// file: its table from the last header above it, counting `[[…]]` entries (`bodies[1].blocks[0]`),
+/// then the key. None for a header, a line without `=`, or a multi-line value's inner line.
+fn key_on_line(text: &str, line: usize) -> Option<String> {
+    let lines: Vec<&str> = text.lines().collect();
+    let here = lines.get(line.checked_sub(1)?)?.trim();
+    if here.starts_with('[') || here.starts_with('#') {
+        return None;
+    }
+    let key = here.split_once('=')?.0.trim();
+    let bare = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-' || c == '.';
+    if key.is_empty() || !key.chars().all(bare) {
+        return None;
+    }
+    let table = table_above(&lines, line - 1);
+    Some(if table.is_empty() {
+        key.to_string()
+    } else {
+        format!("{table}.{key}")
+    })
+}
+
+/// The dotted key of a field the TOML reader names in `message` ("unknown field `foo`, …",
+/// "missing field `bar`"), in the table that line `line` (1-based; its header or a key of it)
+/// belongs to: the line itself holds no key of that name.
+fn named_field_key(text: &str, line: usize, message: &str) -> Option<String> {
+    let field = ["unknown field `", "missing field `"]
+        .iter()
+        .find_map(|p| message.strip_prefix(p))?
+        .split('`')
+        .next()?;
+    let lines: Vec<&str> = text.lines().collect();
+    let table = table_above(&lines, line);
+    Some(if table.is_empty() {
+        field.to_string()
+    } else {
+        format!("{table}.{field}")
+    })
+}
+
+/// The table (as `--set` writes it: `bodies[1].blocks[0]`) that the last header among the
+/// first `end` lines opens, counting `[[…]]` entries; "" before any header.
+fn table_above(lines: &[&str], end: usize) -> String {
+    let mut counts: std::collections::HashMap<String, usize> = Default::default();
+    let mut table = String::new();
+    for l in &lines[..end.min(lines.len())] {
+        let l = l.trim();
+        if let Some(name) = l.strip_prefix("[[").and_then(|r| r.split("]]").next()) {
+            let name = name.trim().to_string();
+            // A new entry of a parent restarts the counts of its children.
+            counts.retain(|k, _| !k.starts_with(&format!("{name}.")));
+            *counts.entry(name.clone()).or_insert(0) += 1;
+            table = indexed(&name, &counts);
+        } else if let Some(name) = l.strip_prefix('[').and_then(|r| r.split(']').next()) {
+            table = indexed(name.trim(), &counts);
+        }
+    }
+    table
+}
+
+/// `a.b.c` with each prefix that is an array of tables given its current index (count − 1).
+fn indexed(name: &str, counts: &std::collections::HashMap<String, usize>) -> String {
+    let mut out = String::new();
+    let mut prefix = String::new();
+    for part in name.split('.') {
+        if !prefix.is_empty() {
+            prefix.push('.');
+            out.push('.');
+        }
+        prefix.push_str(part);
+        out.push_str(part);
+        if let Some(n) = counts.get(&prefix) {
+            out.push_str(&format!("[{}]", n - 1));
+        }
+    }
+    out
+}
+
 /// Read a problem file's text into the schema, with `overrides` applied in order.
 ///
 /// Errors in the file itself name its line (as without overrides); an override that names a
@@ -255,10 +333,15 @@ pub fn parse_spec(
 ) -> Result<ProblemSpec, ProblemError> {
     let file_error = |e: toml::de::Error| {
         let key = match e.span() {
-            Some(span) => format!(
-                "line {}",
-                text[..span.start.min(text.len())].lines().count().max(1)
-            ),
+            Some(span) => {
+                let line = text[..span.start.min(text.len())].lines().count().max(1);
+                let key =
+                    named_field_key(text, line, e.message()).or_else(|| key_on_line(text, line));
+                match key {
+                    Some(key) => format!("{key} (line {line})"),
+                    None => format!("line {line}"),
+                }
+            }
             None => "(file)".into(),
         };
         ProblemError {
@@ -312,6 +395,31 @@ pub fn apply_to_text(
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_wrong_type_in_the_file_names_its_dotted_key_and_line() {
+        let text = "title = 1\n[analysis]\nkind = \"plane_stress\"\n[[bodies]]\nname = \"a\"\n[[bodies.blocks]]\nu = 1\n[[bodies.blocks]]\nu = 2\n[[bodies]]\nname = \"b\"\n[[bodies.blocks]]\nv = 3\n[contact]\nfriction = \"x\"\n";
+        let key = |line| key_on_line(text, line);
+        assert_eq!(key(1).as_deref(), Some("title"));
+        assert_eq!(key(3).as_deref(), Some("analysis.kind"));
+        assert_eq!(key(7).as_deref(), Some("bodies[0].blocks[0].u"));
+        assert_eq!(key(9).as_deref(), Some("bodies[0].blocks[1].u"));
+        // A second body restarts the count of its blocks.
+        assert_eq!(key(13).as_deref(), Some("bodies[1].blocks[0].v"));
+        assert_eq!(key(15).as_deref(), Some("contact.friction"));
+        assert_eq!(key(14), None, "a header");
+        let e = parse_spec(text, "t.toml", &[]).unwrap_err();
+        assert_eq!(e.key, "title (line 1)");
+        // An unknown or missing field is named in its table, wherever the reader points.
+        let e = parse_spec(
+            "[analysis]\nkind = \"plane_stress\"\nfoo = 1\n",
+            "t.toml",
+            &[],
+        )
+        .unwrap_err();
+        assert!(e.key.starts_with("analysis."), "{}: {}", e.key, e.message);
+        assert!(e.key.contains("(line "), "{}", e.key);
+    }
+
     use super::*;
 
     fn punch() -> &'static str {
