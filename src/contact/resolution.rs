@@ -327,16 +327,19 @@ pub(super) fn size_jumps(
 
 /// The first of `jumps` in an element that is in contact in any of `pressures`.
 pub(super) fn size_jump_in_contact(jumps: &[SizeJump], pressures: &[&[f64]]) -> Option<SizeJump> {
-    let in_contact = |i: usize| {
-        pressures.iter().any(|p| {
-            let peak = p.iter().cloned().fold(0.0, f64::max);
-            p.get(i).is_some_and(|&v| v > 1e-6 * peak)
-        })
-    };
     jumps
         .iter()
-        .find(|j| (j.points[0]..=j.points[1]).any(in_contact))
+        .find(|j| span_in_contact(j.points, pressures))
         .copied()
+}
+
+/// Whether any of the points `first..=last` carries pressure (above 1e-6 of the profile's
+/// peak, which is round-off of the active-set solve) in any of `pressures`.
+fn span_in_contact([first, last]: [usize; 2], pressures: &[&[f64]]) -> bool {
+    pressures.iter().any(|p| {
+        let peak = p.iter().cloned().fold(0.0, f64::max);
+        (first..=last).any(|i| p.get(i).is_some_and(|&v| v > 1e-6 * peak))
+    })
 }
 
 /// A line of body 2 inside one of body 1's contact elements, for collocation.
@@ -379,15 +382,9 @@ pub(super) fn unmatched_lines(
 
 /// The first of `lines` inside an element of body 1 that is in contact in any of `pressures`.
 pub(super) fn unmatched_in_contact(lines: &[UnmatchedLine], pressures: &[&[f64]]) -> Option<Point> {
-    let in_contact = |i: usize| {
-        pressures.iter().any(|p| {
-            let peak = p.iter().cloned().fold(0.0, f64::max);
-            p.get(i).is_some_and(|&v| v > 1e-6 * peak)
-        })
-    };
     lines
         .iter()
-        .find(|l| (l.points[0]..=l.points[1]).any(in_contact))
+        .find(|l| span_in_contact(l.points, pressures))
         .map(|l| l.x)
 }
 
