@@ -73,10 +73,10 @@ pub(crate) fn sweep(
     use wearfem::sweep::{self, Job, Sweep};
     let (text, file) = read(name)?;
     let input = |e: wearfem::problem::ProblemError| Failure::Input(e.to_string());
-    let variants = Sweep::parse(set)
-        .and_then(|s| s.prepare(&text, &file))
-        .map_err(input)?;
     let job = if run { Job::Run } else { Job::Steady };
+    let variants = Sweep::parse(set)
+        .and_then(|s| s.prepare(&text, &file, job))
+        .map_err(input)?;
     let threads = if jobs == 0 {
         std::thread::available_parallelism().map_or(1, |n| n.get())
     } else {

@@ -30,7 +30,7 @@ use flexibility::add_flexibility;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
 pub use resolution::{CoarseZone, PointResolution, SizeJump, UnmatchedLine};
-pub use spec::{CircleShape, ContactSpec, PlateSpec};
+pub use spec::{check_settings, CircleShape, ContactSpec, PlateSpec};
 pub use zone::EdgeEnd;
 
 /// Contact points of body 1 with their partners on body 2.
@@ -296,15 +296,7 @@ fn body2_traces(
     };
     match c.discretisation.as_str() {
         "collocation" => {
-            if body1.dofs.p != body2.dofs.p {
-                // One point partner per contact point samples body 2's trace; on a richer
-                // trace than body 1's the point forces raise a ripple at every element vertex
-                // (p₂ = 12 against p₁ = 8: 16 % of the pressure, review of 2026-11-24).
-                return Err(problem.error(
-                    "contact.discretisation",
-                    format!("\"collocation\" needs both bodies at the same degree (body 1 has p = {}, body 2 p = {}); use the default \"mortar\", which couples any two degrees", body1.dofs.p, body2.dofs.p),
-                ));
-            }
+            spec::check_collocation_degrees(problem, body1.dofs.p, body2.dofs.p)?;
             let mut traces2 = Vec::with_capacity(points.x.len());
             for i in 0..points.x.len() {
                 let (s, partner, tr) =
@@ -334,10 +326,7 @@ fn body2_traces(
                 .collect();
             Ok(m.traces)
         }
-        other => Err(problem.error(
-            "contact.discretisation",
-            format!("must be \"mortar\" or \"collocation\", got \"{other}\""),
-        )),
+        other => Err(spec::unknown_discretisation(problem, other)),
     }
 }
 
@@ -352,44 +341,9 @@ impl CondensedContact {
         Ok((contact, body1, body2))
     }
 
-    /// The contact section and the indices of body 1 and body 2, checked.
-    fn spec(problem: &Problem) -> Result<(&ContactSpec, usize, usize), ProblemError> {
-        let c = problem
-            .spec
-            .contact
-            .as_ref()
-            .ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
-        if !(c.friction.is_finite() && c.friction >= 0.0) {
-            return Err(problem.error(
-                "contact.friction",
-                format!("must be ≥ 0, got {}", c.friction),
-            ));
-        }
-        let b1 = problem
-            .body_index(&c.body)
-            .map_err(|_| problem.error("contact.body", format!("no body named \"{}\"", c.body)))?;
-        let b2 = problem.body_index(&c.target_body).map_err(|_| {
-            problem.error(
-                "contact.target_body",
-                format!("no body named \"{}\"", c.target_body),
-            )
-        })?;
-        if b1 == b2 {
-            return Err(problem.error("contact.target_body", "must differ from contact.body"));
-        }
-        if problem.spec.plate.is_some() && !problem.spec.bodies[b1].supports.is_empty() {
-            // The plate equilibrium counts every load on body 1; a support would take some.
-            return Err(problem.error(
-                format!("bodies[{b1}].supports"),
-                "body 1 is held by the [plate]; it may not have supports of its own",
-            ));
-        }
-        Ok((c, b1, b2))
-    }
-
     /// Assemble and factorise the two bodies; body 1 with its plate edge clamped.
     pub fn bodies(problem: &Problem) -> Result<(ElasticBody, ElasticBody), ProblemError> {
-        let (_, b1, b2) = Self::spec(problem)?;
+        let (_, b1, b2) = spec::contact_section(problem)?;
         let clamped: Vec<&str> = problem.spec.plate.iter().map(|p| p.edge.as_str()).collect();
         Ok((
             problem.elastic_body(b1, &clamped)?,
@@ -404,14 +358,9 @@ impl CondensedContact {
         body1: &ElasticBody,
         body2: &ElasticBody,
     ) -> Result<CondensedContact, ProblemError> {
-        let (c, b1, b2) = Self::spec(problem)?;
+        let (c, b1, b2) = spec::contact_section(problem)?;
         let plate = problem.spec.plate.clone();
-        if plate.as_ref().is_some_and(|p| p.edge == c.edge) {
-            return Err(problem.error(
-                "plate.edge",
-                "must differ from contact.edge: the plate clamps its edge, the contact edge must be free to deform",
-            ));
-        }
+        spec::check_plate_edge(problem, c)?;
         let edge1 = problem
             .named_edge(&body1.mesh, b1, &c.edge, "contact.edge")?
             .to_vec();

@@ -317,3 +317,103 @@ fn a_variant_with_warnings_says_so() {
     assert_ne!(csv_cells(csv.lines().nth(2).unwrap())[column], "0");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Problem text of a built-in example with `sets` (`key=value`) applied.
+fn variant(name: &str, sets: &[&str]) -> wearfem::problem::Problem {
+    let text = wearfem::examples::example(name).unwrap();
+    let overrides: Vec<_> = sets
+        .iter()
+        .map(|s| wearfem::overrides::Override::parse(s).unwrap())
+        .collect();
+    wearfem::problem::Problem::with_overrides(text, name, &overrides).unwrap()
+}
+
+#[test]
+fn settings_are_checked_before_solving_with_the_solve_s_own_key() {
+    use wearfem::sweep::{check_settings, Job};
+    // Each of these builds as a problem (the file is well formed) and was refused only when
+    // the variant was solved: a study solved every other variant first. The check must name
+    // the key the solve names.
+    let cases = [
+        ("contact.friction=-1", "contact.friction"),
+        ("contact.method=\"bogus\"", "contact.method"),
+        ("contact.direction=\"x\"", "contact.direction"),
+        ("contact.discretisation=\"bogus\"", "contact.discretisation"),
+        ("contact.body=\"nobody\"", "contact.body"),
+        ("contact.target_body=\"nobody\"", "contact.target_body"),
+        ("contact.target_body=\"punch\"", "contact.target_body"),
+        ("contact.edge=\"nowhere\"", "contact.edge"),
+        ("contact.target_edge=\"nowhere\"", "contact.target_edge"),
+        ("plate.motion=\"bogus\"", "plate.motion"),
+        ("plate.edge=\"contact\"", "plate.edge"),
+        ("plate.edge=\"nowhere\"", "plate.edge"),
+        ("plate.pin=[1e9, 0.0]", "plate.pin"),
+        ("wear.sliding=\"bogus\"", "wear.sliding"),
+        ("wear.amplitude=-1.0", "wear.amplitude"),
+        (
+            "wear.body1={beta = -1.0, a = 1.0, b = 1.0}",
+            "wear.body1.beta",
+        ),
+        ("wear.body1={beta = 1e-8, a = 20.0, b = 1.0}", "wear.body1"),
+    ];
+    for (set, key) in cases {
+        let problem = variant("punch-b40", &[set]);
+        let checked = check_settings(&problem, Job::Steady).expect_err(set);
+        assert_eq!(checked.key, key, "{set}: {checked}");
+        let solved = wearfem::sweep::solve(&problem, Job::Steady).expect_err(set);
+        let message = solved.to_string();
+        assert!(
+            message.contains(&checked.key),
+            "{set}: check {checked}, solve {message}"
+        );
+    }
+    // contact.penalty only matters to the penalty method; a collocation across degrees and a
+    // fixed plate under shape_zero_at (run only) are refused too.
+    let penalty = variant(
+        "punch-b40",
+        &["contact.method=\"penalty\"", "contact.penalty=-1.0"],
+    );
+    assert_eq!(
+        check_settings(&penalty, Job::Steady).unwrap_err().key,
+        "contact.penalty"
+    );
+    let degrees = variant("punch-b40", &["bodies[1].p=6"]);
+    assert_eq!(
+        check_settings(&degrees, Job::Steady).unwrap_err().key,
+        "contact.discretisation"
+    );
+    let fixed = variant("punch-b40", &["plate.motion=\"fixed\""]);
+    assert_eq!(
+        check_settings(&fixed, Job::Run).unwrap_err().key,
+        "wear.shape_zero_at"
+    );
+    assert!(wearfem::sweep::solve(&fixed, Job::Run).is_err());
+}
+
+#[test]
+fn the_settings_check_refuses_no_problem_that_solves() {
+    use wearfem::sweep::{check_settings, Job};
+    // A check that refused a good variant would make a study impossible: every built-in
+    // example and every problem of tests/problems passes it (those with a [wear] section for
+    // both jobs).
+    let mut problems: Vec<wearfem::problem::Problem> = wearfem::examples::EXAMPLES
+        .iter()
+        .map(|(name, _)| variant(name, &[]))
+        .collect();
+    for entry in std::fs::read_dir("tests/problems").unwrap() {
+        let path = entry.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let file = path.display().to_string();
+        problems.push(wearfem::problem::Problem::with_overrides(&text, &file, &[]).unwrap());
+    }
+    for problem in &problems {
+        if problem.spec.contact.is_none() || problem.spec.wear.is_none() {
+            continue;
+        }
+        for job in [Job::Steady, Job::Run] {
+            if let Err(e) = check_settings(problem, job) {
+                panic!("{} ({job:?}) refused: {e}", problem.file);
+            }
+        }
+    }
+}

@@ -5,6 +5,8 @@
 //! line writes; the Python half (`python/wearfem/__init__.py`) turns it into numpy arrays.
 //! Every computation runs with the GIL released.
 
+use std::sync::OnceLock;
+
 use pyo3::exceptions::PyValueError;
 
 /// Rust allocations of the extension go to mimalloc, not glibc's malloc, whose behaviour
@@ -98,7 +100,11 @@ struct PyProblem {
     text: String,
     file: String,
     overrides: Vec<Override>,
-    problem: Problem,
+    /// Built on creation, except for a problem restored from a pickle: there it is built on
+    /// first use, because Dask's scheduler unpickles every task argument without using it,
+    /// and building (parsing, validating, meshing) costs about a millisecond of the
+    /// scheduler's time per variant (docs/performance.md).
+    problem: OnceLock<Problem>,
 }
 
 impl PyProblem {
@@ -115,8 +121,22 @@ impl PyProblem {
             text,
             file,
             overrides,
-            problem,
+            problem: OnceLock::from(problem),
         })
+    }
+
+    /// The model, built now if this problem came from a pickle. A pickle is only made of a
+    /// validated problem, so this fails only for a pickle read by another version of wearfem,
+    /// with the same error as building it.
+    fn model(&self, py: Python<'_>) -> PyResult<&Problem> {
+        if let Some(problem) = self.problem.get() {
+            return Ok(problem);
+        }
+        let built = py
+            .allow_threads(|| Problem::with_overrides(&self.text, &self.file, &self.overrides))
+            .map_err(|e| problem_error(py, &e))?;
+        // Two threads may build it at once; both models are the same, the first is kept.
+        Ok(self.problem.get_or_init(|| built))
     }
 }
 
@@ -129,7 +149,8 @@ impl PyProblem {
         PyProblem::build(py, text, file, Vec::new())
     }
 
-    /// Rebuild from (text, file, [(key, TOML value text)]): pickling, for process pools.
+    /// Restore from (text, file, [(key, TOML value text)]): unpickling, for process pools and
+    /// Dask. The model is built on first use (see `PyProblem::problem`).
     #[staticmethod]
     fn _restore(
         py: Python<'_>,
@@ -142,7 +163,12 @@ impl PyProblem {
             .map(|(k, v)| Override::new(k, wearfem::overrides::parse_value(v)))
             .collect::<Result<Vec<_>, _>>()
             .map_err(|e| problem_error(py, &e))?;
-        PyProblem::build(py, text, file, overrides)
+        Ok(PyProblem {
+            text,
+            file,
+            overrides,
+            problem: OnceLock::new(),
+        })
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, PyObject)> {
@@ -191,8 +217,8 @@ impl PyProblem {
 
     /// Title of the problem.
     #[getter]
-    fn title(&self) -> String {
-        self.problem.spec.title.clone()
+    fn title(&self, py: Python<'_>) -> PyResult<String> {
+        Ok(self.model(py)?.spec.title.clone())
     }
 
     /// The overrides applied, as [(key, TOML value text)].
@@ -206,21 +232,21 @@ impl PyProblem {
 
     /// Static elastic solve: summary JSON text.
     fn _elastic(&self, py: Python<'_>) -> PyResult<String> {
-        let p = &self.problem;
+        let p = self.model(py)?;
         let out = py.allow_threads(|| driver::elastic(p));
         out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
     }
 
     /// One contact solve: summary JSON text.
     fn _contact(&self, py: Python<'_>) -> PyResult<String> {
-        let p = &self.problem;
+        let p = self.model(py)?;
         let out = py.allow_threads(|| driver::contact(p).map(|r| r.0));
         out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
     }
 
     /// Steady state: summary JSON text, with "probes" (name → contact point index) added.
     fn _steady(&self, py: Python<'_>) -> PyResult<String> {
-        let p = &self.problem;
+        let p = self.model(py)?;
         let out = py.allow_threads(|| {
             driver::steady(p).map(|(state, contact, seconds)| {
                 let warnings = if state.status == wearfem::steady::SteadyStatus::Solved {
@@ -235,7 +261,13 @@ impl PyProblem {
                     // The command line writes nothing for an iteration that did not converge;
                     // here the status, iterations and residual are returned, but none of the
                     // last iterate's values (as for a failed contact solve).
-                    for key in ["p_plus", "p_minus", "p_sum", "shape", "rigid_wear_per_period"] {
+                    for key in [
+                        "p_plus",
+                        "p_minus",
+                        "p_sum",
+                        "shape",
+                        "rigid_wear_per_period",
+                    ] {
                         if summary.get(key).is_some() {
                             summary[key] = serde_json::Value::Null;
                         }
@@ -257,7 +289,7 @@ impl PyProblem {
         steps: Option<usize>,
         progress: Option<PyObject>,
     ) -> PyResult<String> {
-        let p = &self.problem;
+        let p = self.model(py)?;
         let mut callback_error: Option<PyErr> = None;
         let out = py.allow_threads(|| {
             driver::wear(p, steps, |s| {
@@ -279,29 +311,41 @@ impl PyProblem {
         out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
     }
 
+    /// The settings `job` ("steady" or "run") reads, checked without solving anything: a
+    /// study checks every variant so before it solves any (`wearfem::sweep::check_settings`).
+    fn _check(&self, py: Python<'_>, job: &str) -> PyResult<()> {
+        let job = study_job(job)?;
+        let problem = self.model(py)?;
+        py.allow_threads(|| sweep::check_settings(problem, job))
+            .map_err(|e| problem_error(py, &e))
+    }
+
     /// One variant of a study (`job`: "steady" or "run"): its row of `wearfem sweep`'s
     /// sweep.json as JSON text.
     fn _study_row(&self, py: Python<'_>, job: &str) -> PyResult<String> {
-        let job = match job {
-            "steady" => Job::Steady,
-            "run" => Job::Run,
-            other => {
-                return Err(PyValueError::new_err(format!(
-                    "job must be \"steady\" or \"run\", got \"{other}\""
-                )))
-            }
-        };
+        let job = study_job(job)?;
+        let problem = self.model(py)?;
         let out = py.allow_threads(|| {
-            sweep::solve(&self.problem, job).map(|outcome| {
+            sweep::solve(problem, job).map(|outcome| {
                 let variant = Variant {
                     overrides: self.overrides.clone(),
-                    problem: self.problem.clone(),
+                    problem: problem.clone(),
                 };
                 let s = sweep::report::summary("", job, 1, &[variant], &[outcome], 0.0);
                 s["variants"][0].clone()
             })
         });
         out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
+    }
+}
+
+fn study_job(job: &str) -> PyResult<Job> {
+    match job {
+        "steady" => Ok(Job::Steady),
+        "run" => Ok(Job::Run),
+        other => Err(PyValueError::new_err(format!(
+            "job must be \"steady\" or \"run\", got \"{other}\""
+        ))),
     }
 }
 

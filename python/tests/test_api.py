@@ -142,6 +142,20 @@ def test_pickle_keeps_overrides(punch):
     np.testing.assert_array_equal(p.steady().p_plus, q.steady().p_plus)
 
 
+def test_an_unpickled_problem_is_built_when_first_used(punch):
+    # Unpickling keeps the text and overrides and builds the model on first use (Dask's
+    # scheduler unpickles every task argument it never uses). A pickle that no longer builds
+    # (one written by another version of wearfem, imitated here) must then raise the same
+    # error as building it, naming the key, not fail silently or crash.
+    restore, (text, file, sets) = punch.with_overrides({"contact.friction": 0.1})._inner.__reduce__()
+    broken = restore(text, file, [("analysis.thickness", "-1.0")])
+    q = wearfem.Problem(broken)
+    with pytest.raises(wearfem.WearfemError, match="analysis.thickness"):
+        q.steady()
+    with pytest.raises(wearfem.WearfemError, match="analysis.thickness"):
+        q.title
+
+
 def test_progress_exception_reraised(punch):
     def boom(step, half_period):
         raise RuntimeError("stop")

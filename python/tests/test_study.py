@@ -71,6 +71,31 @@ def test_bad_variant_raises_before_solving(punch):
     assert e.value.key == "contact.friction"
 
 
+@pytest.mark.parametrize(
+    "key, values",
+    [
+        ("contact.friction", [0.2, -1.0]),
+        ("plate.motion", ["vertical_rotation", "sideways"]),
+        ("wear.amplitude", [1.5, -1.0]),
+        ("contact.target_edge", ["surface", "nowhere"]),
+    ],
+)
+@pytest.mark.parametrize("parallel", [False, True])
+def test_a_bad_setting_raises_before_any_variant_is_solved(punch, monkeypatch, key, values, parallel):
+    # These values make a well-formed file that only the contact, plate or wear stage refuses;
+    # the study must refuse it before it solves the good variant in front of it.
+    from wearfem import _study
+
+    solved = []
+    monkeypatch.setattr(_study, "solve_variant", lambda p, job="steady": solved.append(p))
+    monkeypatch.setattr(_study, "solve_variants", lambda ps, job="steady": [solved.append(p) for p in ps])
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        with pytest.raises(wearfem.WearfemError) as e:
+            wearfem.study(punch, {key: values}, executor=pool if parallel else None)
+    assert e.value.key == key
+    assert solved == []
+
+
 def test_thread_pool_equals_serial(punch):
     serial = wearfem.study(punch, GRID)
     with concurrent.futures.ThreadPoolExecutor(2) as pool:
@@ -87,6 +112,17 @@ def test_chunks_keep_the_grid_order(punch, chunksize):
         chunked = wearfem.study(punch, GRID, executor=pool, chunksize=chunksize)
     for k in RESULTS + list(GRID):
         assert list(serial[k]) == list(chunked[k]), k
+
+
+@pytest.mark.parametrize("count", [1, 2, 3, 7, 64, 65, 1000])
+@pytest.mark.parametrize("workers", [1, 2, 3, 16])
+def test_guided_chunks_cover_every_variant_once(count, workers):
+    from wearfem._study import _chunk_sizes
+
+    sizes = _chunk_sizes(count, workers)
+    assert sum(sizes) == count and min(sizes) >= 1
+    # Guided: never growing, so the last tasks are the small ones that balance the workers.
+    assert all(a >= b for a, b in zip(sizes, sizes[1:]))
 
 
 @pytest.mark.parametrize("chunksize", [0, -1, 2.5, "4"])

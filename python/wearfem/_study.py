@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import itertools
 import json
+import random
 from typing import Any, Dict, List, Mapping, Sequence, Union
 
 import numpy as np
@@ -91,12 +92,13 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
     with the command line's ``--set`` keys. ``executor``: None (serial, in this thread) or
     anything with ``submit(fn, *args)`` returning futures with ``.result()``:
     ``concurrent.futures.ThreadPoolExecutor`` (the GIL is released while solving),
-    ``ProcessPoolExecutor``, or a ``dask.distributed.Client`` (one task per variant).
+    ``ProcessPoolExecutor``, or a ``dask.distributed.Client`` (one task per chunk of variants, see ``chunksize``).
     ``job``: "steady" (default) or "run" (the wear time integration).
-    ``chunksize``: variants per task. By default about four tasks per worker the executor
-    reports (a Dask client's threads, a pool's ``max_workers``), so that the scheduler's cost
-    per task is spread over several variants (on 2 Dask workers, 64 variants of punch-b40 ran
-    1.3 times the serial rate one per task and 1.6 times in chunks of 8, docs/performance.md).
+    ``chunksize``: variants per task. By default the tasks shrink as the study goes (guided
+    self-scheduling over the workers the executor reports: a Dask client's threads, a pool's
+    ``max_workers``), so that the scheduler's cost per task is spread over several variants
+    (on 2 Dask workers, 64 variants of punch-b40 ran 1.3 times the serial rate one per task
+    and 1.6 times in chunks of 8, docs/performance.md) and the workers still end together.
 
     Every variant is validated here before any is solved: a bad key or value raises
     :class:`wearfem.WearfemError` naming it. A variant that does not converge is a row with
@@ -109,17 +111,14 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
     if job not in ("steady", "run"):
         raise ValueError(f'job must be "steady" or "run", got {job!r}')
     sets = variants(grid)
-    problems = _build(problem, sets, parallel=executor is not None)
+    problems = _build(problem, sets, job, parallel=executor is not None)
     if executor is None:
         rows = [solve_variant(p, job) for p in problems]
     else:
-        if chunksize is None:
-            chunksize = -(-len(problems) // (4 * _workers(executor)))
-        if not (isinstance(chunksize, int) and chunksize >= 1):
+        if chunksize is not None and not (isinstance(chunksize, int) and chunksize >= 1):
             raise ValueError(f"chunksize must be a positive integer, got {chunksize!r}")
-        chunks = [problems[i : i + chunksize] for i in range(0, len(problems), chunksize)]
-        futures = [executor.submit(solve_variants, c, job) for c in chunks]
-        rows = [row for f in futures for row in f.result()]
+        sizes = _chunk_sizes(len(problems), _workers(executor), chunksize)
+        rows = _solve_chunks(executor, problems, job, sizes)
     warned = [s for s, r in zip(sets, rows) if r.get("warnings")]
     if warned:
         # One line for the study; each variant's lines are in its `warnings` cell.
@@ -136,21 +135,65 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
     return _table(sets, rows)
 
 
-def _build(problem, sets: List[Dict[str, Any]], parallel: bool) -> list:
-    """Every variant built and validated, in order, before any is solved: the first bad one
-    (in grid order) raises. For a parallel study they are built on this machine's cores
-    (building releases the GIL), since the executor's workers wait for them: on 2 cores, 64
-    variants of punch-b40 took 45 ms one by one and 27 ms on two threads, of a 0.7 s study
-    (docs/performance.md)."""
+def _chunk_sizes(count: int, workers: int, chunksize=None) -> List[int]:
+    """How many variants each task takes. A given ``chunksize`` for all (the last takes the
+    rest); by default guided self-scheduling: each task a quarter of what is left per worker,
+    at least 2, so the first tasks are large (the executor's cost per task spread over many
+    variants) and the last ones small (whichever worker is free takes them, and the workers
+    end together; on 2 Dask workers with equal chunks one ended 60-120 ms after the other in a
+    0.75 s study, docs/performance.md)."""
+    if chunksize is not None:
+        return [min(chunksize, count - start) for start in range(0, count, chunksize)]
+    sizes, left = [], count
+    while left > 0:
+        size = min(left, max(2, -(-left // (2 * workers))))
+        sizes.append(size)
+        left -= size
+    return sizes
+
+
+def _solve_chunks(executor, problems: list, job: str, sizes: List[int]) -> List[Dict[str, Any]]:
+    """The rows of every variant in grid order, solved in tasks of ``sizes`` variants.
+
+    The variants go to the tasks in a fixed shuffled order, not as neighbours: a variant's cost
+    follows the grid's axes (friction changes the contact iterations), so a task of
+    neighbours could hold the costliest row of the grid. The order changes no result (each
+    variant is solved on its own), and it is the same on every run."""
+    order = list(range(len(problems)))
+    random.Random(len(problems)).shuffle(order)
+    chunks, start = [], 0
+    for size in sizes:
+        chunks.append(order[start : start + size])
+        start += size
+    futures = [executor.submit(solve_variants, [problems[i] for i in c], job) for c in chunks]
+    rows: List[Dict[str, Any]] = [{}] * len(problems)
+    for chunk, future in zip(chunks, futures):
+        for i, row in zip(chunk, future.result()):
+            rows[i] = row
+    return rows
+
+
+def _build(problem, sets: List[Dict[str, Any]], job: str, parallel: bool) -> list:
+    """Every variant built and its settings for ``job`` checked (``wearfem sweep``'s checks),
+    in order, before any is solved: the first bad one (in grid order) raises. For a parallel
+    study they are built on this machine's cores (building releases the GIL), since the
+    executor's workers wait for them: on 2 cores, 64 variants of punch-b40 took 45 ms one by
+    one and 27 ms on two threads, of a 0.7 s study (docs/performance.md)."""
+
+    def checked(overrides):
+        variant = problem.with_overrides(overrides)
+        variant._inner._check(job)
+        return variant
+
     if not parallel or len(sets) < 2:
-        return [problem.with_overrides(s) for s in sets]
+        return [checked(s) for s in sets]
     import os
     from concurrent.futures import ThreadPoolExecutor
 
     threads = min(len(sets), os.cpu_count() or 1, 8)
     with ThreadPoolExecutor(threads) as pool:
         # map() returns in order and raises the first failure in grid order on iteration.
-        return list(pool.map(problem.with_overrides, sets))
+        return list(pool.map(checked, sets))
 
 
 def _table(sets: List[Dict[str, Any]], rows: List[Dict[str, Any]]):

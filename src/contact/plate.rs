@@ -19,15 +19,10 @@ pub(super) fn plate_modes(
     points: &ContactPoints,
 ) -> Result<PlateModes, ProblemError> {
     let plate_edges = problem.named_edge(&body1.mesh, b1, &pl.edge, "plate.edge")?;
-    let pin = match (pl.motion.as_str(), pl.pin) {
-        ("vertical_rotation", None) => {
-            return Err(problem.error("plate.pin", "rotation needs a pin [x, z]"))
-        }
-        (_, Some(p)) if !p.iter().all(|c| c.abs() <= crate::problem::MAX_COORDINATE) => {
-            return Err(problem.error("plate.pin", "must be coordinates [x, z] within ±1e6 mm"))
-        }
-        (_, Some(p)) => p,
-        (_, None) => {
+    super::spec::check_plate(problem, pl)?;
+    let pin = match pl.pin {
+        Some(p) => p,
+        None => {
             // Without a pin, moments are reported about the plate edge's centroid.
             let (mut sum, mut length) = ([0.0; 2], 0.0);
             for &(e, l) in plate_edges {
@@ -59,14 +54,7 @@ pub(super) fn plate_modes(
             ("lambda_F", Box::new(translation)),
             ("lambda_M", Box::new(rotation)),
         ],
-        other => {
-            return Err(problem.error(
-                "plate.motion",
-                format!(
-                    "must be \"fixed\", \"vertical\" or \"vertical_rotation\", got \"{other}\""
-                ),
-            ))
-        }
+        other => return Err(super::spec::unknown_motion(problem, other)),
     };
     let mut force = [0.0; 2];
     let mut moment = 0.0;

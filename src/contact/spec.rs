@@ -1,7 +1,11 @@
-//! The `[contact]` and `[plate]` sections of a problem file, as parsed (validated where the
-//! contact problem is built).
+//! The `[contact]` and `[plate]` sections of a problem file, as parsed, and the checks of
+//! what they name and set. [`check_settings`] runs the checks that need no assembly, so that
+//! a study can refuse a bad variant before it solves any; the checks that need the contact
+//! points (a point without a partner, a crown on an inclined edge) run where the contact
+//! problem is built.
 
 use crate::geometry::Point;
+use crate::problem::{Problem, ProblemError};
 use serde::Deserialize;
 
 /// `[contact]` section of a problem file.
@@ -74,4 +78,138 @@ pub struct PlateSpec {
     /// Pin [x, z] (mm), needed for rotation; moments are taken about it.
     #[serde(default, deserialize_with = "crate::schema::exact::optional_pair")]
     pub pin: Option<Point>,
+}
+
+/// What `[contact]` and `[plate]` name or set, checked on the meshes alone (nothing is
+/// assembled): the bodies, edges, friction, discretisation and plate that
+/// [`crate::contact::CondensedContact::build`] would refuse, with the same messages.
+pub fn check_settings(problem: &Problem) -> Result<(), ProblemError> {
+    let (c, b1, b2) = contact_section(problem)?;
+    check_plate_edge(problem, c)?;
+    match c.discretisation.as_str() {
+        "mortar" => {}
+        "collocation" => check_collocation_degrees(
+            problem,
+            problem.body_discretisation(b1).p,
+            problem.body_discretisation(b2).p,
+        )?,
+        other => return Err(unknown_discretisation(problem, other)),
+    }
+    let mesh1 = problem.mesh(b1)?;
+    problem.named_edge(&mesh1, b1, &c.edge, "contact.edge")?;
+    problem.named_edge(
+        &problem.mesh(b2)?,
+        b2,
+        &c.target_edge,
+        "contact.target_edge",
+    )?;
+    if let Some(plate) = &problem.spec.plate {
+        problem.named_edge(&mesh1, b1, &plate.edge, "plate.edge")?;
+        check_plate(problem, plate)?;
+    }
+    Ok(())
+}
+
+/// The contact section and the indices of body 1 and body 2, checked.
+pub(super) fn contact_section(
+    problem: &Problem,
+) -> Result<(&ContactSpec, usize, usize), ProblemError> {
+    let c = problem
+        .spec
+        .contact
+        .as_ref()
+        .ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
+    if !(c.friction.is_finite() && c.friction >= 0.0) {
+        return Err(problem.error(
+            "contact.friction",
+            format!("must be ≥ 0, got {}", c.friction),
+        ));
+    }
+    let b1 = problem
+        .body_index(&c.body)
+        .map_err(|_| problem.error("contact.body", format!("no body named \"{}\"", c.body)))?;
+    let b2 = problem.body_index(&c.target_body).map_err(|_| {
+        problem.error(
+            "contact.target_body",
+            format!("no body named \"{}\"", c.target_body),
+        )
+    })?;
+    if b1 == b2 {
+        return Err(problem.error("contact.target_body", "must differ from contact.body"));
+    }
+    if problem.spec.plate.is_some() && !problem.spec.bodies[b1].supports.is_empty() {
+        // The plate equilibrium counts every load on body 1; a support would take some.
+        return Err(problem.error(
+            format!("bodies[{b1}].supports"),
+            "body 1 is held by the [plate]; it may not have supports of its own",
+        ));
+    }
+    Ok((c, b1, b2))
+}
+
+/// The plate may not clamp the contact edge.
+pub(super) fn check_plate_edge(problem: &Problem, c: &ContactSpec) -> Result<(), ProblemError> {
+    if problem
+        .spec
+        .plate
+        .as_ref()
+        .is_some_and(|p| p.edge == c.edge)
+    {
+        return Err(problem.error(
+            "plate.edge",
+            "must differ from contact.edge: the plate clamps its edge, the contact edge must be free to deform",
+        ));
+    }
+    Ok(())
+}
+
+pub(super) fn unknown_discretisation(problem: &Problem, other: &str) -> ProblemError {
+    problem.error(
+        "contact.discretisation",
+        format!("must be \"mortar\" or \"collocation\", got \"{other}\""),
+    )
+}
+
+/// Collocation needs both bodies at the same degree.
+pub(super) fn check_collocation_degrees(
+    problem: &Problem,
+    p1: usize,
+    p2: usize,
+) -> Result<(), ProblemError> {
+    if p1 != p2 {
+        // One point partner per contact point samples body 2's trace; on a richer trace than
+        // body 1's the point forces raise a ripple at every element vertex (p₂ = 12 against
+        // p₁ = 8: 16 % of the pressure, review of 2026-11-24).
+        return Err(problem.error(
+            "contact.discretisation",
+            format!("\"collocation\" needs both bodies at the same degree (body 1 has p = {p1}, body 2 p = {p2}); use the default \"mortar\", which couples any two degrees"),
+        ));
+    }
+    Ok(())
+}
+
+pub(super) fn unknown_motion(problem: &Problem, other: &str) -> ProblemError {
+    problem.error(
+        "plate.motion",
+        format!("must be \"fixed\", \"vertical\" or \"vertical_rotation\", got \"{other}\""),
+    )
+}
+
+/// The plate's motion is one of the three, and a rotation has a pin within range.
+pub(super) fn check_plate(problem: &Problem, plate: &PlateSpec) -> Result<(), ProblemError> {
+    if !matches!(
+        plate.motion.as_str(),
+        "fixed" | "vertical" | "vertical_rotation"
+    ) {
+        return Err(unknown_motion(problem, &plate.motion));
+    }
+    match plate.pin {
+        None if plate.motion == "vertical_rotation" => {
+            Err(problem.error("plate.pin", "rotation needs a pin [x, z]"))
+        }
+        Some(p) if !p.iter().all(|c| c.abs() <= crate::problem::MAX_COORDINATE) => {
+            Err(problem.error("plate.pin", "must be coordinates [x, z] within ±1e6 mm"))
+        }
+        _ => Ok(()),
+    }
 }

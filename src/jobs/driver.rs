@@ -155,6 +155,23 @@ pub fn contact_probes(problem: &Problem, contact: &CondensedContact) -> Vec<(Str
         .collect()
 }
 
+/// Every probe must be on the contact body (see [`check_contact_probes`]); checked without the
+/// contact points.
+pub fn check_probe_bodies(problem: &Problem) -> Result<(), ProblemError> {
+    let Some(c) = problem.spec.contact.as_ref() else {
+        return Ok(());
+    };
+    for (name, probe) in &problem.spec.probes {
+        if probe.body != c.body {
+            return Err(problem.error(
+                format!("probes.{name}.body"),
+                format!("is on body \"{}\", but contact, run and steady report pressures on the contact body \"{}\" only; remove the probe or move it to the contact edge", probe.body, c.body),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Every probe must be on the contact edge of the contact body: `contact`, `run` and `steady`
 /// report the pressure at the contact point nearest to a probe, which is only the pressure
 /// *at the probe* when it lies on that edge, within half the widest spacing of the points.
@@ -165,16 +182,11 @@ pub fn check_contact_probes(
     let Some(c) = problem.spec.contact.as_ref() else {
         return Ok(());
     };
+    check_probe_bodies(problem)?;
     let x = &contact.points.x;
     let spacing = x.windows(2).map(|w| dist(w[0], w[1])).fold(0.0, f64::max);
     for (name, probe) in &problem.spec.probes {
         let key = format!("probes.{name}");
-        if probe.body != c.body {
-            return Err(problem.error(
-                format!("{key}.body"),
-                format!("is on body \"{}\", but contact, run and steady report pressures on the contact body \"{}\" only; remove the probe or move it to the contact edge", probe.body, c.body),
-            ));
-        }
         let nearest = x
             .iter()
             .map(|&p| dist(p, probe.at))
@@ -328,6 +340,11 @@ pub fn steady(
         .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
     let integrator =
         WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
+    // The steady state solves no single contact problem, so neither the method nor (for
+    // reciprocating sliding) the first direction is used; a bad name is refused all the same,
+    // as by every other job and by a study.
+    method(problem)?;
+    direction(problem)?;
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
     check_contact_probes(problem, &contact)?;

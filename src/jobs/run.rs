@@ -39,6 +39,30 @@ pub struct WearRun {
     warnings: std::sync::OnceLock<Vec<String>>,
 }
 
+/// `wear.shape_zero_at` shifts the worn shape by a vertical rigid translation of the punch,
+/// which only leaves the pressures unchanged if the plate can take it up through λ_F.
+pub(crate) fn check_shape_zero_plate(
+    problem: &Problem,
+) -> Result<(), crate::problem::ProblemError> {
+    let shifts = problem
+        .spec
+        .wear
+        .as_ref()
+        .is_some_and(|w| w.shape_zero_at.is_some());
+    let plate_moves = problem
+        .spec
+        .plate
+        .as_ref()
+        .is_some_and(|p| p.motion != "fixed");
+    if shifts && !plate_moves {
+        return Err(problem.error(
+            "wear.shape_zero_at",
+            "shifting the shape needs a plate that moves vertically (plate.motion = \"vertical\" or \"vertical_rotation\"); remove the key or free the plate",
+        ));
+    }
+    Ok(())
+}
+
 /// Run the wear integration of `problem` (optionally overriding the number of steps).
 pub fn wear(
     problem: &Problem,
@@ -64,21 +88,7 @@ pub fn wear(
     let mut integrator =
         WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
     integrator.first_direction = direction(problem)?;
-    let plate_moves = problem
-        .spec
-        .plate
-        .as_ref()
-        .is_some_and(|p| p.motion != "fixed");
-    if spec.shape_zero_at.is_some() && !plate_moves {
-        // The shift is a vertical rigid translation of the punch, which only leaves the
-        // pressures unchanged if the plate can take it up through λ_F.
-        return Err(problem
-            .error(
-                "wear.shape_zero_at",
-                "shifting the shape needs a plate that moves vertically (plate.motion = \"vertical\" or \"vertical_rotation\"); remove the key or free the plate",
-            )
-            .into());
-    }
+    check_shape_zero_plate(problem)?;
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
     check_contact_probes(problem, &contact)?;

@@ -83,17 +83,42 @@ impl Sweep {
         Ok(variants)
     }
 
-    /// Build and validate every variant's problem before any is solved, so that a bad key or
-    /// value stops the study at once.
-    pub fn prepare(&self, text: &str, file: &str) -> Result<Vec<Variant>, ProblemError> {
+    /// Build and validate every variant's problem, with the settings `job` reads
+    /// ([`check_settings`]), before any is solved, so that a bad key or value stops the study
+    /// at once.
+    pub fn prepare(&self, text: &str, file: &str, job: Job) -> Result<Vec<Variant>, ProblemError> {
         self.variants()?
             .into_iter()
             .map(|overrides| {
                 let problem = Problem::with_overrides(text, file, &overrides)?;
+                check_settings(&problem, job)?;
                 Ok(Variant { overrides, problem })
             })
             .collect()
     }
+}
+
+/// What `job` reads from `problem`, checked without assembling or solving anything, so that a
+/// study refuses a bad variant before it solves any: the contact and plate sections
+/// ([`crate::contact::check_settings`]), the solver method and first direction, the probes'
+/// body, and the wear section. Only the checks that need the contact points (a point without
+/// a partner on body 2, a probe or `wear.shape_zero_at` off the contact edge) wait for the
+/// variant's solve.
+pub fn check_settings(problem: &Problem, job: Job) -> Result<(), ProblemError> {
+    crate::contact::check_settings(problem)?;
+    driver::method(problem)?;
+    driver::direction(problem)?;
+    driver::check_probe_bodies(problem)?;
+    let wear = problem
+        .spec
+        .wear
+        .as_ref()
+        .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
+    crate::wear::WearIntegrator::new(wear).map_err(|(key, message)| problem.error(key, message))?;
+    if job == Job::Run {
+        super::run::check_shape_zero_plate(problem)?;
+    }
+    Ok(())
 }
 
 /// One variant of a study: its overrides and the problem they give.
