@@ -2,8 +2,8 @@
 
     python python/examples/benchmark.py [WEARFEM_BIN]     # default target/release/wearfem
 
-Serial Python, a thread pool of 2, a Dask LocalCluster (2 worker processes, one thread
-each) and the command line's `wearfem sweep -j 2`; prints a Markdown table for
+Serial Python, a thread pool of 2, a Dask LocalCluster of threads (one worker, 2 threads) and
+one of processes (2 workers, one thread each), and the command line's `wearfem sweep -j 2`; prints a Markdown table for
 docs/performance.md. The overhead per task is the wall time the executor spends beyond the
 variants' own solve time, per variant, relative to a variant's mean solve time:
 (workers · wall − Σ seconds) / Σ seconds.
@@ -46,10 +46,16 @@ def main():
         rows.append(timed(f"thread pool ({WORKERS} threads)", WORKERS, pool))
     from distributed import Client, LocalCluster
 
-    with LocalCluster(n_workers=WORKERS, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-        with Client(cluster) as client:
+    # Dask's two kinds of local cluster: threads in this process (the Dask documentation's
+    # advice for code that releases the GIL, as wearfem does), and worker processes (each with
+    # its own interpreter, as on a cluster).
+    for label, layout in [
+        (f"Dask LocalCluster (threads, 1 × {WORKERS})", dict(n_workers=1, threads_per_worker=WORKERS, processes=False)),
+        (f"Dask LocalCluster (processes, {WORKERS} × 1)", dict(n_workers=WORKERS, threads_per_worker=1, processes=True)),
+    ]:
+        with LocalCluster(dashboard_address=None, **layout) as cluster, Client(cluster) as client:
             wearfem.study(punch, {"contact.friction": [0.2, 0.25]}, executor=client)  # workers warm
-            rows.append(timed(f"Dask LocalCluster ({WORKERS} × 1 thread)", WORKERS, client))
+            rows.append(timed(label, WORKERS, client))
 
     serial = rows[0][3]
     for label, _, _, table, _, _ in rows[1:]:
