@@ -1,4 +1,5 @@
 use super::*;
+use crate::capacitance::Capacitance;
 use crate::problem::Problem;
 
 #[test]
