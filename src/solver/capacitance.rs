@@ -50,7 +50,7 @@ pub struct Capacitance {
 }
 
 /// What the last corrected solve leaves for an a-posteriori bound on its residual
-/// ([`Capacitance::bound`]).
+/// ([`crate::complementarity::ContactSolver::solve_pressures_into`]).
 pub struct CorrectionTerms<'a> {
     /// Per block of unknowns, max |x₀| + Σ_i |μ_i| max |z_i| over the block.
     pub scale: &'a [f64],

@@ -220,13 +220,13 @@ impl ContactSolver {
     ///
     /// - *all points in contact*: the computed x̂ of K x = b satisfies (K + ΔK) x̂ = b with
     ///   |ΔK| ≤ γ_3n Pᵀ|L||U| for the computed factors, whatever their growth (backward
-    ///   error analysis of LU with pivoting, [`DenseLu::abs_factor_row_sums`]), so
+    ///   error analysis of LU with pivoting, [`crate::dense::DenseLu::abs_factor_row_sums`]), so
     ///   |d_i| = |(K x̂ − b)_i| ≤ γ_3n Σ_b (Pᵀ|L||U| 1_b)_i max_{j in b} |x̂_j|, the blocks b
     ///   being the forces and each rigid unknown (whose scales differ by orders of
     ///   magnitude). A factorisation with large growth shows in the row sums.
     /// - *the capacitance correction* (a few points out of contact): the residual is an
     ///   exact sum of backward errors of the solves with K, the rounding of the sum
-    ///   x₀ + Σ μ_i z_i and the leftovers set to zero ([`Capacitance::terms`]); the points
+    ///   x₀ + Σ μ_i z_i and the leftovers set to zero ([`crate::capacitance::Capacitance::terms`]); the points
     ///   out of contact get the multipliers μ_i as gaps, within the same bound. This is the
     ///   case the full pass was kept for: the correction loses accuracy when K is far worse
     ///   conditioned than the reduced system, which shows as large μ_i, z_i or leftovers,
