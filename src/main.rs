@@ -210,6 +210,7 @@ fn load(name: &str, set: &[String]) -> Result<Problem, Failure> {
         .iter()
         .map(|s| Override::parse(s))
         .collect::<Result<Vec<_>, _>>()
+        .and_then(|o| wearfem::overrides::check_together(&o).map(|_| o))
         .map_err(|e| Failure::Input(e.to_string()))?;
     Problem::with_overrides(&text, &file, &overrides).map_err(|e| Failure::Input(e.to_string()))
 }

@@ -388,6 +388,86 @@ fn settings_are_checked_before_solving_with_the_solve_s_own_key() {
         "wear.shape_zero_at"
     );
     assert!(wearfem::sweep::solve(&fixed, Job::Run).is_err());
+    // A steady state needs a plate that moves and a body that wears (a red team's finding:
+    // both were refused only when the variant was solved).
+    for (set, key) in [
+        ("plate.motion=\"fixed\"", "plate.motion"),
+        (
+            "wear.body1={beta = 0.0, a = 1.0, b = 1.0}",
+            "wear.body1.beta",
+        ),
+    ] {
+        let problem = variant("punch-b40", &[set]);
+        let checked = check_settings(&problem, Job::Steady).unwrap_err();
+        assert_eq!(checked.key, key, "{set}: {checked}");
+        let solved = wearfem::sweep::solve(&problem, Job::Steady)
+            .unwrap_err()
+            .to_string();
+        assert!(solved.contains(key), "{set}: solve says {solved}");
+    }
+}
+
+const CONTACT_TABLE: &str = "contact={body = \"punch\", edge = \"contact\", target_body = \"strip\", target_edge = \"surface\"}";
+
+#[test]
+fn axes_that_overlap_are_refused() {
+    // `contact` after `contact.friction` would replace the friction of every variant while
+    // its column still listed the values (a red team's study reported friction 0.1 and 0.4
+    // for two identical solves at friction 0).
+    for sets in [
+        ["contact.friction=[0.1, 0.4]", CONTACT_TABLE],
+        [CONTACT_TABLE, "contact.friction=[0.1, 0.4]"],
+        [
+            "bodies[1].blocks[0].u=[8, 12]",
+            "bodies[1]={name = \"strip\"}",
+        ],
+    ] {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        let e = wearfem::sweep::Sweep::parse(&sets).unwrap_err();
+        assert!(e.message.contains("overlaps"), "{sets:?}: {e}");
+    }
+    // Keys that merely share leading letters (b and beta) are disjoint.
+    let sets = vec![
+        "wear.body1.b=[1.0, 1.2]".to_string(),
+        "wear.body1.beta=[1e-8]".to_string(),
+    ];
+    assert!(wearfem::sweep::Sweep::parse(&sets).is_ok());
+}
+
+#[test]
+fn one_command_s_overrides_may_not_replace_each_other() {
+    let dir = scratch("replace");
+    let out = dir.to_str().unwrap();
+    let friction = "contact.friction=0.4";
+    let (code, _, err) = wearfem(&[
+        "contact",
+        "punch-b40",
+        "--set",
+        friction,
+        "--set",
+        CONTACT_TABLE,
+        "--out",
+        out,
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("contact.friction") && err.trim().lines().count() == 1,
+        "{err}"
+    );
+    assert!(!dir.exists());
+    // The other way round the friction is set inside the new table: allowed.
+    let (code, _, err) = wearfem(&[
+        "contact",
+        "punch-b40",
+        "--set",
+        CONTACT_TABLE,
+        "--set",
+        friction,
+        "--out",
+        out,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -42,13 +42,30 @@ fn job_error(py: Python<'_>, e: &JobError) -> PyErr {
     }
 }
 
-/// A Python value (bool, int, float, str, list, tuple, dict) as a TOML value.
+/// `wearfem.WearfemError("--set", key, message)`: an override value that cannot be written in a
+/// problem file, named like the command line's `--set` errors.
+fn set_error(py: Python<'_>, key: &str, message: String) -> PyErr {
+    problem_error(
+        py,
+        &ProblemError {
+            file: wearfem::overrides::SET.into(),
+            key: key.into(),
+            message,
+        },
+    )
+}
+
+/// A Python value (bool, int, float, str, list, tuple, dict, numpy scalar) as a TOML value;
+/// anything else (None, a set, an integer beyond 64 bits) is a `WearfemError` naming `key`.
 fn to_toml(value: &Bound<'_, PyAny>, key: &str) -> PyResult<toml::Value> {
+    let py = value.py();
     if value.is_instance_of::<PyBool>() {
         return Ok(toml::Value::Boolean(value.extract()?));
     }
     if value.is_instance_of::<PyInt>() {
-        return Ok(toml::Value::Integer(value.extract()?));
+        return value.extract().map(toml::Value::Integer).map_err(|_| {
+            set_error(py, key, format!("the integer {value} does not fit in 64 bits"))
+        });
     }
     if value.is_instance_of::<PyFloat>() {
         return Ok(toml::Value::Float(value.extract()?));
@@ -63,7 +80,9 @@ fn to_toml(value: &Bound<'_, PyAny>, key: &str) -> PyResult<toml::Value> {
     if let Ok(dict) = value.downcast::<PyDict>() {
         let mut table = toml::Table::new();
         for (k, v) in dict.iter() {
-            let k: String = k.extract()?;
+            let k: String = k.extract().map_err(|_| {
+                set_error(py, key, format!("table keys must be strings, got {k:?}"))
+            })?;
             let inner = format!("{key}.{k}");
             table.insert(k, to_toml(&v, &inner)?);
         }
@@ -76,10 +95,15 @@ fn to_toml(value: &Bound<'_, PyAny>, key: &str) -> PyResult<toml::Value> {
     if let Ok(x) = value.extract::<f64>() {
         return Ok(toml::Value::Float(x));
     }
-    Err(PyValueError::new_err(format!(
-        "{key}: cannot be written in a problem file (type {})",
-        value.get_type().name()?
-    )))
+    Err(set_error(
+        py,
+        key,
+        format!(
+            "{} cannot be written in a problem file (type {})",
+            value.repr()?,
+            value.get_type().name()?
+        ),
+    ))
 }
 
 /// Overrides from a Python mapping {key: value}, in its order.
@@ -87,7 +111,9 @@ fn overrides_from(py: Python<'_>, values: &Bound<'_, PyDict>) -> PyResult<Vec<Ov
     values
         .iter()
         .map(|(k, v)| {
-            let key: String = k.extract()?;
+            let key: String = k
+                .extract()
+                .map_err(|_| set_error(py, &format!("{k}"), "keys must be strings".into()))?;
             let value = to_toml(&v, &key)?;
             Override::new(&key, value).map_err(|e| problem_error(py, &e))
         })
@@ -199,7 +225,11 @@ impl PyProblem {
     /// A new problem with `values` ({dotted key: value}) applied after this one's overrides.
     fn with_overrides(&self, py: Python<'_>, values: &Bound<'_, PyDict>) -> PyResult<Self> {
         let mut overrides = self.overrides.clone();
-        overrides.extend(overrides_from(py, values)?);
+        let new = overrides_from(py, values)?;
+        // Keys of one dict must not replace one another (`contact` after `contact.friction`);
+        // a later call may replace what an earlier one set.
+        wearfem::overrides::check_together(&new).map_err(|e| problem_error(py, &e))?;
+        overrides.extend(new);
         PyProblem::build(py, self.text.clone(), self.file.clone(), overrides)
     }
 
@@ -349,10 +379,19 @@ fn study_job(job: &str) -> PyResult<Job> {
     }
 }
 
+/// The keys of a study's axes checked as `wearfem sweep` checks its `--set` axes: none twice,
+/// none inside a table another sets (`wearfem::overrides::check_axes`).
+#[pyfunction]
+fn _check_axes(py: Python<'_>, keys: Vec<String>) -> PyResult<()> {
+    let keys: Vec<&str> = keys.iter().map(String::as_str).collect();
+    wearfem::overrides::check_axes(&keys).map_err(|e| problem_error(py, &e))
+}
+
 /// The compiled module.
 #[pymodule]
 fn _wearfem(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyProblem>()?;
+    m.add_function(wrap_pyfunction!(_check_axes, m)?)?;
     // The library's build stamp (crate version + git commit), as summary.json's
     // `wearfem_version`: a wheel out of step with the command line shows it.
     m.add("__version__", wearfem::VERSION)?;

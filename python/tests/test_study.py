@@ -193,3 +193,36 @@ def test_a_variant_with_warnings_says_so(punch):
     counts = [len(w) for w in table["warnings"]]
     assert counts[0] == 0 and counts[1] >= 1
     assert "one half period" in list(table["warnings"])[1][0]
+
+
+CONTACT = {"body": "punch", "edge": "contact", "target_body": "strip", "target_edge": "surface"}
+
+
+def test_axes_that_overlap_are_refused(punch):
+    # `contact` would replace every variant's friction while the friction column still listed
+    # its values (a red team's finding, as for `wearfem sweep`).
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.study(punch, {"contact.friction": [0.1, 0.4], "contact": [CONTACT]})
+    assert e.value.key == "contact" and "overlaps" in e.value.message
+
+
+def test_an_empty_axis_is_refused(punch):
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.study(punch, {"contact.friction": []})
+    assert e.value.key == "contact.friction"
+
+
+def test_one_dict_s_overrides_may_not_replace_each_other(punch):
+    with pytest.raises(wearfem.WearfemError) as e:
+        punch.with_overrides({"contact.friction": 0.4, "contact": CONTACT})
+    assert e.value.key == "contact"
+    # A later call replaces on purpose, and the friction set inside the new table is used.
+    p = punch.with_overrides({"contact.friction": 0.4}).with_overrides({"contact": CONTACT})
+    assert p.with_overrides({"contact.friction": 0.4}).to_toml() != p.to_toml()
+
+
+@pytest.mark.parametrize("value", [None, {1, 2}, 2**70, object()])
+def test_a_value_a_problem_file_cannot_hold_names_the_key(punch, value):
+    with pytest.raises(wearfem.WearfemError) as e:
+        punch.with_overrides({"wear.steps": value})
+    assert e.value.key == "wear.steps" and e.value.file == "--set"

@@ -14,6 +14,8 @@ from typing import Any, Dict, List, Mapping, Sequence, Union
 
 import numpy as np
 
+from ._wearfem import _check_axes
+
 Grid = Union[Mapping[str, Sequence[Any]], Sequence[Mapping[str, Any]]]
 
 
@@ -21,11 +23,20 @@ def variants(grid: Grid) -> List[Dict[str, Any]]:
     """The override dicts of a study: the Cartesian product of a dict of lists (first key
     slowest, as ``wearfem sweep``), or a list of override dicts taken as given."""
     if isinstance(grid, Mapping):
-        keys = list(grid)
-        for k in keys:
-            if isinstance(grid[k], (str, bytes)) or not hasattr(grid[k], "__iter__"):
+        axes: Dict[str, list] = {}
+        for k, values in grid.items():
+            if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
                 raise TypeError(f"grid[{k!r}] must be a list of values")
-        return [dict(zip(keys, values)) for values in itertools.product(*grid.values())]
+            axes[k] = list(values)
+            if not axes[k]:
+                # As `wearfem sweep`: an empty axis would make an empty study without a word.
+                from . import WearfemError
+
+                raise WearfemError("--set", str(k), "the list of values is empty")
+        # As `wearfem sweep`: no key inside a table another axis sets (its column would list
+        # values that were not used).
+        _check_axes([str(k) for k in axes])
+        return [dict(zip(axes, values)) for values in itertools.product(*axes.values())]
     return [dict(v) for v in grid]
 
 

@@ -44,6 +44,18 @@ pub(super) fn plate_modes(
         .map(|(n, w)| n[1] * w)
         .sum();
     let toward = if facing_up > 0.0 { 1.0 } else { -1.0 };
+    let length: f64 = points.weight.iter().sum();
+    if pl.motion != "fixed" && facing_up.abs() <= 1e-9 * length {
+        // Body 2 lies beside body 1 (the contact's normals horizontal on the whole): a plate
+        // that moves only vertically can neither press body 1 onto it nor balance the load.
+        return Err(problem.error(
+            "plate.motion",
+            format!(
+                "the contact edge \"{}\" faces sideways (its normals are horizontal on average), but the plate moves only vertically and cannot press body 1 onto body 2; turn the model so that body 2 lies below or above body 1, or hold the plate (motion = \"fixed\")",
+                problem.spec.contact.as_ref().map_or("", |c| c.edge.as_str())
+            ),
+        ));
+    }
     let translation = move |_: Point| [0.0, toward];
     let rotation = move |x: Point| [x[1] - pin[1], -(x[0] - pin[0])];
     type Mode = (&'static str, Box<dyn Fn(Point) -> Point>);

@@ -67,6 +67,65 @@ impl Override {
     pub fn value_text(&self) -> String {
         value_text(&self.value)
     }
+
+    /// Whether applying `self` after `earlier` replaces `earlier`'s value: `self` names the
+    /// same key, or a table that holds it (`contact` after `contact.friction`).
+    pub fn replaces(&self, earlier: &Override) -> bool {
+        earlier.path.starts_with(&self.path)
+    }
+}
+
+/// Overrides given together (the `--set`s of one command, one Python dict) are applied in
+/// order, so one that replaces an earlier one ([`Override::replaces`]) would drop its value
+/// without a word; refused, naming the later key. (Overrides added later to a problem that
+/// already has some, as Python's chained `with_overrides`, replace on purpose.)
+pub fn check_together(overrides: &[Override]) -> Result<(), ProblemError> {
+    for (j, later) in overrides.iter().enumerate() {
+        if let Some(earlier) = overrides[..j].iter().find(|e| later.replaces(e)) {
+            let message = if earlier.key == later.key {
+                "is given twice; give it once".to_string()
+            } else {
+                format!(
+                    "sets a table that holds {0}, given before it, and would replace its value; give one or the other, or {0} after it",
+                    earlier.key
+                )
+            };
+            return Err(set_error(&later.key, message));
+        }
+    }
+    Ok(())
+}
+
+/// The keys of a study's axes must set disjoint parts of the file: an axis whose key names a
+/// table holding another axis's key (`contact` and `contact.friction`) would replace or
+/// rewrite that axis's value in every variant, and its column would list values that were not
+/// the ones used. Refused, naming the later key.
+pub fn check_axes(keys: &[&str]) -> Result<(), ProblemError> {
+    let paths = keys
+        .iter()
+        .map(|k| parse_key(k))
+        .collect::<Result<Vec<_>, _>>()?;
+    for j in 1..paths.len() {
+        for i in 0..j {
+            let (a, b) = (&paths[i], &paths[j]);
+            if a == b {
+                return Err(set_error(
+                    keys[j],
+                    "is given twice; give all its values in one list",
+                ));
+            }
+            if a.starts_with(b) || b.starts_with(a) {
+                return Err(set_error(
+                    keys[j],
+                    format!(
+                        "overlaps the axis {}: one sets a table that holds the other, so a row would list a value that was not the one used; vary only one of them",
+                        keys[i]
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Split `KEY=VALUE` at the first `=`.

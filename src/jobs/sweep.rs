@@ -52,17 +52,12 @@ impl Sweep {
             }
             // Checks the key's syntax now, before any variant is built.
             Override::new(key, values[0].clone())?;
-            // A key given twice would have its first values overridden by the second in every
-            // variant, while the table still listed both: list all values once instead.
-            if axes.iter().any(|(k, _): &(String, _)| k == key) {
-                return Err(ProblemError {
-                    file: SET.into(),
-                    key: key.into(),
-                    message: "is given twice; give all its values in one list".into(),
-                });
-            }
             axes.push((key.to_string(), values));
         }
+        // A key given twice, or one inside a table another axis sets, would have its values
+        // replaced in every variant while the table still listed them.
+        let keys: Vec<&str> = axes.iter().map(|(k, _)| k.as_str()).collect();
+        crate::overrides::check_axes(&keys)?;
         Ok(Sweep { axes })
     }
 
@@ -102,8 +97,8 @@ impl Sweep {
 /// study refuses a bad variant before it solves any: the contact and plate sections
 /// ([`crate::contact::check_settings`]), the solver method and first direction, the probes'
 /// body, and the wear section. Only the checks that need the contact points (a point without
-/// a partner on body 2, a probe or `wear.shape_zero_at` off the contact edge) wait for the
-/// variant's solve.
+/// a partner on body 2, a probe or `wear.shape_zero_at` off the contact edge) and a body whose
+/// supports do not hold it (found when it is factorised) wait for the variant's solve.
 pub fn check_settings(problem: &Problem, job: Job) -> Result<(), ProblemError> {
     crate::contact::check_settings(problem)?;
     driver::method(problem)?;
@@ -114,9 +109,27 @@ pub fn check_settings(problem: &Problem, job: Job) -> Result<(), ProblemError> {
         .wear
         .as_ref()
         .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
-    crate::wear::WearIntegrator::new(wear).map_err(|(key, message)| problem.error(key, message))?;
-    if job == Job::Run {
-        super::run::check_shape_zero_plate(problem)?;
+    let integrator = crate::wear::WearIntegrator::new(wear)
+        .map_err(|(key, message)| problem.error(key, message))?;
+    match job {
+        Job::Run => super::run::check_shape_zero_plate(problem)?,
+        Job::Steady => {
+            // What the steady state refuses before it iterates (`driver::steady` names the
+            // same keys for these errors).
+            use crate::steady::SteadyError;
+            let plate_moves = problem
+                .spec
+                .plate
+                .as_ref()
+                .is_some_and(|p| p.motion != "fixed");
+            if !plate_moves {
+                let e = SteadyError::NoRigidMotion;
+                return Err(problem.error("plate.motion", e.to_string()));
+            }
+            if integrator.half_period_wear().iter().all(|t| t.0 == 0.0) {
+                return Err(problem.error("wear.body1.beta", SteadyError::NoWear.to_string()));
+            }
+        }
     }
     Ok(())
 }
