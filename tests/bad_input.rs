@@ -65,6 +65,29 @@ fn unknown_key() {
     );
 }
 
+/// The line a message names is the line the key is written on (it was one too early for an
+/// unknown key, a red team's finding), for an unknown key and for a value of the wrong type.
+#[test]
+fn the_line_named_is_the_key_s_own() {
+    for (from, to, key) in [
+        (
+            "poisson = 0.3",
+            "poisson = 0.3\nyoungs = 3.0",
+            "youngs = 3.0",
+        ),
+        ("poisson = 0.3", "poisson = \"0.3\"", "poisson = \"0.3\""),
+    ] {
+        let text = baseline().replacen(from, to, 1);
+        let line = text.lines().position(|l| l.trim() == key).unwrap() + 1;
+        let (code, err) = run(&text, "line_named");
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains(&format!("(line {line})")),
+            "{key}: line {line}: {err}"
+        );
+    }
+}
+
 #[test]
 fn missing_field() {
     expect_error(

@@ -393,7 +393,7 @@ pub fn parse_spec(
     let file_error = |e: toml::de::Error| {
         let key = match e.span() {
             Some(span) => {
-                let line = text[..span.start.min(text.len())].lines().count().max(1);
+                let line = text[..span.start.min(text.len())].matches('\n').count() + 1;
                 let key =
                     named_field_key(text, line, e.message()).or_else(|| key_on_line(text, line));
                 match key {
