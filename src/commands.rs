@@ -77,11 +77,14 @@ pub(crate) fn sweep(
     let variants = Sweep::parse(set)
         .and_then(|s| s.prepare(&text, &file, job))
         .map_err(input)?;
-    let threads = if jobs == 0 {
-        std::thread::available_parallelism().map_or(1, |n| n.get())
-    } else {
-        jobs
-    };
+    // The threads actually used (at most one per variant), as printed and in sweep.json.
+    let threads = sweep::threads(jobs, variants.len());
+    // An axis the job never reads gives the same row for every value: say so before the
+    // work, and again in sweep.json.
+    let study_warnings = sweep::unread::warnings(&file, job, &variants);
+    for w in &study_warnings {
+        eprintln!("{w}");
+    }
     let start = std::time::Instant::now();
     let bar = progress::count_bar(variants.len(), "variants", quiet);
     let results = sweep::run(&variants, job, threads, &|_| bar.inc(1));
@@ -92,7 +95,16 @@ pub(crate) fn sweep(
         .collect::<Result<Vec<_>, _>>()
         .map_err(Failure::from)?;
     let title = &variants[0].problem.spec.title;
-    sweep::report::write(out, title, job, threads, &variants, &outcomes, seconds)?;
+    sweep::report::write(
+        out,
+        title,
+        job,
+        threads,
+        &variants,
+        &outcomes,
+        seconds,
+        &study_warnings,
+    )?;
     let failed = outcomes.iter().filter(|o| !o.converged).count();
     println!(
         "{file}: {} variants on {threads} threads in {seconds:.2} s; {failed} did not converge → {}",
@@ -113,6 +125,21 @@ pub(crate) fn sweep(
             warned.len(),
             variants.len(),
             warned.join("; ")
+        );
+    }
+    let no_cycle: Vec<String> = variants
+        .iter()
+        .zip(&outcomes)
+        .filter(|(_, o)| o.converged && o.status.contains(sweep::NO_CYCLE))
+        .map(|(v, _)| variant_name(v))
+        .collect();
+    if !no_cycle.is_empty() {
+        // Converged, as `wearfem run` (exit 0), but without a last cycle to report.
+        eprintln!(
+            "note: {file}: {} of {} variants completed no full cycle: their value cells are empty, as `wearfem run` writes no final profiles then: {}",
+            no_cycle.len(),
+            variants.len(),
+            no_cycle.join("; ")
         );
     }
     if failed > 0 {

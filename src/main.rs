@@ -152,7 +152,9 @@ enum Command {
         /// Run the wear integration of each variant.
         #[arg(long)]
         run: bool,
-        /// Variants solved at once (default: one per core).
+        /// Variants solved at once, on as many threads (default 0: one per core). More than
+        /// the study's variants would only start idle threads: N is lowered to the number of
+        /// variants, and the number used is printed and given as `threads` in sweep.json.
         #[arg(short = 'j', long = "jobs", default_value_t = 0)]
         jobs: usize,
         /// Output directory.

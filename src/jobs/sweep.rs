@@ -15,6 +15,7 @@ use rayon::prelude::*;
 use std::time::Instant;
 
 pub mod report;
+pub mod unread;
 
 /// Which job each variant runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -147,12 +148,16 @@ pub struct Variant {
 ///
 /// A variant that did not converge has no figures: `values` is `None`, so that nothing from a
 /// failed or non-converged solve can be written or returned as a result (its row keeps the
-/// overrides, `status` and `seconds`, its value cells are empty).
+/// overrides, `status` and `seconds`, its value cells are empty). A wear run that converged
+/// but completed no full cycle has no figures either: there is no last cycle to report.
 #[derive(Clone, Debug)]
 pub struct Outcome {
-    /// "solved", or what went wrong ("not converged (…)", "failed solves …, stopped at step …").
+    /// "solved", or what went wrong ("not converged (…)", "failed solves …, stopped at step …");
+    /// for a converged run also "stopped at step N: the steady state was reached" (adaptive
+    /// schedule) or [`NO_CYCLE`], as `wearfem run` and Python's `RunResult.status` say.
     pub status: String,
-    /// Whether the computation converged; `values` is `Some` exactly when it did.
+    /// Whether the computation converged, as the single command's exit code 0 says; `values`
+    /// is `Some` when it did, except for a run that completed no full cycle.
     pub converged: bool,
     /// x of the contact points, mm (the geometry, known whether or not the solve converged).
     pub x: Vec<f64>,
@@ -246,6 +251,10 @@ impl Outcome {
     }
 }
 
+/// The status of a converged wear run too short for one full cycle: it has no last-cycle
+/// profiles, so its row has no values (what `wearfem run` prints for it, and exit code 0).
+pub const NO_CYCLE: &str = "no full cycle completed: no final profiles";
+
 fn peak(p: &[f64]) -> f64 {
     p.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
 }
@@ -254,10 +263,12 @@ fn peak(p: &[f64]) -> f64 {
 ///
 /// Only a converged variant carries figures ([`Outcome::values`]). A steady variant whose
 /// iteration did not converge keeps nothing of its last iterate. A wear run converges when
-/// every step solved and met its tolerance and at least one full cycle completed; otherwise
-/// its row has no figures at all, not even those of the steps before a failure (a profile of
-/// an earlier cycle is not the result of the run asked for), and `status` says what went
-/// wrong and at which step the run stopped.
+/// `wearfem run` with the same overrides would exit with 0: every step solved and met its
+/// tolerance, and it did not stop early but at the steady state of an adaptive schedule;
+/// otherwise its row has no figures at all, not even those of the steps before a failure (a
+/// profile of an earlier cycle is not the result of the run asked for), and `status` says
+/// what went wrong and at which step the run stopped. A converged run that completed no full
+/// cycle has no figures either (no final profiles, as `wearfem run`), and its status says so.
 pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
     let start = Instant::now();
     let outcome = match job {
@@ -298,21 +309,29 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
         Job::Run => {
             let run = driver::wear(problem, None, |_| {})?;
             let h = &run.history;
+            // Converged exactly when `wearfem run` exits with 0 (and Python's
+            // `RunResult.converged` is true): every step solved and met its tolerance, and the
+            // run did not stop early for another reason than the steady state. A run too short
+            // for one full cycle converged all the same (it did what was asked); it only has
+            // no last-cycle profiles, so its row has no values (`wearfem run` writes no final
+            // profiles either) and its status says why.
             let stopped_early = h
                 .stopped
                 .as_ref()
-                .filter(|(_, reason)| *reason != crate::wear::StopReason::SteadyState);
-            let no_cycle = h.steady_distance.is_none();
+                .is_some_and(|(_, reason)| *reason != crate::wear::StopReason::SteadyState);
             let converged = h.failed_solves == 0
                 && h.unconverged_steps == 0
                 && h.oscillating_steps == 0
-                && stopped_early.is_none()
-                && !no_cycle;
+                && !stopped_early;
+            let no_cycle = h.steady_distance.is_none();
             let reciprocating = problem
                 .spec
                 .wear
                 .as_ref()
                 .is_some_and(|w| w.sliding != "monotonic");
+            // The status of Python's `RunResult` for the same run (built from summary.json's
+            // counts and `stopped_at_step`/`stop_reason`), so that an adaptive run that
+            // stopped at the steady state says so here too.
             let mut problems = Vec::new();
             if h.failed_solves > 0 {
                 problems.push(format!("failed solves {}", h.failed_solves));
@@ -323,13 +342,16 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
             if h.oscillating_steps > 0 {
                 problems.push(format!("oscillating steps {}", h.oscillating_steps));
             }
-            if let Some((s, reason)) = stopped_early {
+            if let Some((s, reason)) = &h.stopped {
                 problems.push(format!("stopped at step {s}: {reason}"));
-            } else if no_cycle {
-                problems.push("no full cycle completed".into());
             }
+            if converged && no_cycle {
+                // What `wearfem run` prints for it.
+                problems.push(NO_CYCLE.into());
+            }
+            let converged_with_values = converged && !no_cycle;
             Outcome {
-                status: if converged {
+                status: if problems.is_empty() {
                     "solved".into()
                 } else {
                     problems.join(", ")
@@ -339,7 +361,7 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
                 reciprocating,
                 probes: run.probes.clone(),
                 rigid_names: Vec::new(),
-                values: converged.then(|| Values {
+                values: converged_with_values.then(|| Values {
                     p_plus: h.p_plus.clone(),
                     p_minus: reciprocating.then(|| h.p_minus.clone()),
                     shape: h.shape.clone(),
@@ -369,9 +391,22 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
     })
 }
 
-/// Solve every variant with `job` on `jobs` threads (0: one per core), calling `on_done`
-/// (from any thread) as each finishes. The outcomes are in variant order; a variant whose
-/// input is bad gives its error in place.
+/// The threads a study of `variants` variants runs on when `requested` are asked for (0: one
+/// per core): never more than the variants. A thread beyond them would have nothing to do,
+/// and each costs its stack and start-up: `-j 10000` on two variants ran for over a minute
+/// in 0.9 GB before this bound (red-team review 10, F8).
+pub fn threads(requested: usize, variants: usize) -> usize {
+    let requested = if requested == 0 {
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    } else {
+        requested
+    };
+    requested.min(variants).max(1)
+}
+
+/// Solve every variant with `job` on `jobs` threads (0: one per core; at most one per
+/// variant, [`threads`]), calling `on_done` (from any thread) as each finishes. The outcomes
+/// are in variant order; a variant whose input is bad gives its error in place.
 pub fn run(
     variants: &[Variant],
     job: Job,
@@ -388,6 +423,7 @@ pub fn run(
             })
             .collect()
     };
+    let jobs = threads(jobs, variants.len());
     match rayon::ThreadPoolBuilder::new().num_threads(jobs).build() {
         Ok(pool) => pool.install(work),
         // Only the speed depends on the pool: without one, rayon's global pool does the work.
@@ -424,6 +460,16 @@ mod tests {
         assert_eq!(text(0), ["[1100, 120]", "0.1", "1.2"]);
         assert_eq!(text(1), ["[1100, 120]", "0.25", "1.2"]);
         assert_eq!(text(5), ["[1100, 140]", "0.4", "1.2"]);
+    }
+
+    #[test]
+    fn no_more_threads_than_variants() {
+        assert_eq!(threads(10_000, 2), 2);
+        assert_eq!(threads(3, 10), 3);
+        assert_eq!(threads(5, 0), 1);
+        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+        assert_eq!(threads(0, 1000), cores.min(1000));
+        assert_eq!(threads(0, 1), 1);
     }
 
     #[test]

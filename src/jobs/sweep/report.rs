@@ -17,8 +17,12 @@ fn text_cell(s: &str) -> Value {
 
 /// Column names of `sweep.csv` for these outcomes (taken from the problem and the contact,
 /// which every variant has whether or not it converged).
+///
+/// The probe and plate-unknown columns are the union over all variants, each name where it
+/// first appears in variant order: an axis can change them (`probes`, `plate.motion`), and a
+/// column taken from one variant alone would drop another's probe and leave its solved row
+/// with empty cells, which mean "did not converge".
 fn columns(job: Job, variants: &[Variant], outcomes: &[Outcome]) -> Columns {
-    let first = &outcomes[0];
     Columns {
         keys: variants[0]
             .overrides
@@ -26,10 +30,21 @@ fn columns(job: Job, variants: &[Variant], outcomes: &[Outcome]) -> Columns {
             .map(|o| o.key.clone())
             .collect(),
         reciprocating: outcomes.iter().any(|o| o.reciprocating),
-        probes: first.probes.iter().map(|p| p.0.clone()).collect(),
-        rigid: first.rigid_names.clone(),
+        probes: union(outcomes.iter().map(|o| o.probes.iter().map(|p| &p.0))),
+        rigid: union(outcomes.iter().map(|o| o.rigid_names.iter())),
         run: job == Job::Run,
     }
+}
+
+/// The names of all lists, each once, in the order they first appear.
+fn union<'a>(lists: impl Iterator<Item = impl Iterator<Item = &'a String>>) -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for name in lists.flatten() {
+        if !names.contains(name) {
+            names.push(name.clone());
+        }
+    }
+    names
 }
 
 struct Columns {
@@ -180,7 +195,10 @@ pub fn summary(
 }
 
 /// Write `sweep.csv`, `sweep.json` and `sweep.svg` into `dir`. `outcomes` are in variant
-/// order and must not be empty.
+/// order and must not be empty. `warnings` are the study's own warning lines (an axis the job
+/// does not read, [`super::unread::warnings`]), put in sweep.json's `warnings`; each variant's
+/// are in its row.
+#[allow(clippy::too_many_arguments)]
 pub fn write(
     dir: &Path,
     title: &str,
@@ -189,6 +207,7 @@ pub fn write(
     variants: &[Variant],
     outcomes: &[Outcome],
     seconds: f64,
+    warnings: &[String],
 ) -> Result<(), OutputError> {
     let columns = columns(job, variants, outcomes);
     let header = columns.header();
@@ -199,11 +218,9 @@ pub fn write(
         .map(|(v, o)| columns.row(v, o))
         .collect();
     write_csv(dir, "sweep.csv", &header, &rows)?;
-    write_json(
-        dir,
-        "sweep.json",
-        &summary(title, job, jobs, variants, outcomes, seconds),
-    )?;
+    let mut json = summary(title, job, jobs, variants, outcomes, seconds);
+    json["warnings"] = json!(warnings);
+    write_json(dir, "sweep.json", &json)?;
     let path = dir.join("sweep.svg");
     plot(&path, title, variants, outcomes).map_err(|m| OutputError {
         path: path.display().to_string(),
@@ -223,12 +240,24 @@ fn plot(
     // Without it the text of the figure fails with FontUnavailable (no system fonts are used).
     crate::plot::register_font();
     let e = |e: &dyn std::fmt::Display| e.to_string();
-    let missing = outcomes.iter().filter(|o| !o.converged).count();
-    let heading = match missing {
-        0 => format!("{title}: parameter study"),
-        m => format!("{title}: parameter study ({m} variants did not converge and are not drawn)"),
+    // Only variants with values are drawn: not those that did not converge, nor runs that
+    // completed no full cycle (converged, but without a last cycle).
+    let failed = outcomes.iter().filter(|o| !o.converged).count();
+    let no_cycle = outcomes
+        .iter()
+        .filter(|o| o.converged && o.values.is_none())
+        .count();
+    let heading = match (failed, no_cycle) {
+        (0, 0) => format!("{title}: parameter study"),
+        (m, 0) => format!("{title}: parameter study ({m} variants did not converge and are not drawn)"),
+        (0, c) => format!("{title}: parameter study ({c} variants completed no full cycle and are not drawn)"),
+        (m, c) => format!("{title}: parameter study (not drawn: {m} variants did not converge, {c} completed no full cycle)"),
     };
-    let legend_rows = outcomes.iter().filter(|o| o.converged).count().div_ceil(3);
+    let legend_rows = outcomes
+        .iter()
+        .filter(|o| o.values.is_some())
+        .count()
+        .div_ceil(3);
     let height = 560 + 24 * legend_rows as u32;
     let root = SVGBackend::new(path, (1400, height)).into_drawing_area();
     root.fill(&WHITE).map_err(|x| e(&x))?;
@@ -245,10 +274,10 @@ fn plot(
             .collect::<Vec<_>>()
             .join(", ")
     };
-    // A variant that did not converge has no values: it is listed in the CSV with its status
-    // and empty cells, and not drawn.
+    // A variant without values is listed in the CSV with its status and empty cells, and not
+    // drawn.
     let drawn: Vec<usize> = (0..outcomes.len())
-        .filter(|&k| outcomes[k].converged)
+        .filter(|&k| outcomes[k].values.is_some())
         .collect();
     let (variants, outcomes): (Vec<&Variant>, Vec<&Outcome>) =
         drawn.iter().map(|&k| (&variants[k], &outcomes[k])).unzip();
@@ -259,7 +288,7 @@ fn plot(
         ("worn shape (wear gap)", "g (µm)", 1000.0),
     ];
     for (panel, (name, y_label, scale)) in panels.iter().zip(curves) {
-        // Only converged variants are drawn, and those have values.
+        // Only variants with values are drawn.
         let value = |o: &&Outcome, i: usize| match &o.values {
             Some(v) if scale == 1.0 => v.p_plus[i],
             Some(v) => v.shape[i] * scale,
