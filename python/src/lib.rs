@@ -387,11 +387,37 @@ fn _check_axes(py: Python<'_>, keys: Vec<String>) -> PyResult<()> {
     wearfem::overrides::check_axes(&keys).map_err(|e| problem_error(py, &e))
 }
 
+/// The warning lines `wearfem sweep` prints for a study's axes that `job` does not read
+/// (`wearfem::sweep::unread::warnings`): `problems` are the variants, each with the study's
+/// `axes` overrides last.
+#[pyfunction]
+fn _study_warnings(
+    py: Python<'_>,
+    problems: Vec<PyRef<'_, PyProblem>>,
+    job: &str,
+    axes: usize,
+) -> PyResult<Vec<String>> {
+    let job = study_job(job)?;
+    let variants = problems
+        .iter()
+        .map(|p| {
+            let first_axis = p.overrides.len().saturating_sub(axes);
+            Ok(Variant {
+                overrides: p.overrides[first_axis..].to_vec(),
+                problem: p.model(py)?.clone(),
+            })
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let file = problems.first().map(|p| p.file.clone()).unwrap_or_default();
+    Ok(sweep::unread::warnings(&file, job, &variants))
+}
+
 /// The compiled module.
 #[pymodule]
 fn _wearfem(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyProblem>()?;
     m.add_function(wrap_pyfunction!(_check_axes, m)?)?;
+    m.add_function(wrap_pyfunction!(_study_warnings, m)?)?;
     // The library's build stamp (crate version + git commit), as summary.json's
     // `wearfem_version`: a wheel out of step with the command line shows it.
     m.add("__version__", wearfem::VERSION)?;

@@ -226,3 +226,11 @@ def test_a_value_a_problem_file_cannot_hold_names_the_key(punch, value):
     with pytest.raises(wearfem.WearfemError) as e:
         punch.with_overrides({"wear.steps": value})
     assert e.value.key == "wear.steps" and e.value.file == "--set"
+
+
+def test_an_axis_the_job_does_not_read_is_warned_about(punch):
+    # A steady state does not read the time-stepping scheme: equal rows, said once (as
+    # `wearfem sweep` says it).
+    with pytest.warns(wearfem.WearfemWarning, match="does not read wear.scheme"):
+        table = wearfem.study(punch, {"wear.scheme": ["implicit", "fixed_point"]})
+    assert list(table["peak_p_plus"])[0] == list(table["peak_p_plus"])[1]

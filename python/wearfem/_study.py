@@ -14,7 +14,7 @@ from typing import Any, Dict, List, Mapping, Sequence, Union
 
 import numpy as np
 
-from ._wearfem import _check_axes
+from ._wearfem import _check_axes, _study_warnings
 
 Grid = Union[Mapping[str, Sequence[Any]], Sequence[Mapping[str, Any]]]
 
@@ -123,6 +123,9 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
         raise ValueError(f'job must be "steady" or "run", got {job!r}')
     sets = variants(grid)
     problems = _build(problem, sets, job, parallel=executor is not None)
+    if isinstance(grid, Mapping) and problems:
+        # As `wearfem sweep`: an axis the job does not read gives equal rows, said once here.
+        _warn_all(_study_warnings([p._inner for p in problems], job, len(sets[0])))
     if executor is None:
         rows = [solve_variant(p, job) for p in problems]
     else:
@@ -133,17 +136,22 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
     warned = [s for s, r in zip(sets, rows) if r.get("warnings")]
     if warned:
         # One line for the study; each variant's lines are in its `warnings` cell.
-        import warnings
-
-        from . import WearfemWarning
-
-        warnings.warn(
-            f"{len(warned)} of {len(sets)} variants have warnings (the `warnings` column), "
-            f"first {warned[0]}",
-            WearfemWarning,
-            stacklevel=2,
+        _warn_all(
+            [
+                f"{len(warned)} of {len(sets)} variants have warnings (the `warnings` column), "
+                f"first {warned[0]}"
+            ]
         )
     return _table(sets, rows)
+
+
+def _warn_all(lines: List[str]) -> None:
+    import warnings
+
+    from . import WearfemWarning
+
+    for line in lines:
+        warnings.warn(line, WearfemWarning, stacklevel=3)
 
 
 def _chunk_sizes(count: int, workers: int, chunksize=None) -> List[int]:
