@@ -59,6 +59,9 @@ pub fn write_csv(
 
 pub use crate::jobs::json::{named, number, numbers};
 
+mod stale;
+pub use stale::remove_earlier_outputs;
+
 fn plot_error(path: &Path) -> impl Fn(String) -> OutputError + '_ {
     move |m| OutputError {
         path: path.display().to_string(),
