@@ -170,6 +170,21 @@ enum Command {
     },
 }
 
+impl Command {
+    /// The output directory of a command that writes one.
+    fn out(&self) -> Option<&Path> {
+        match self {
+            Command::Elastic { out, .. }
+            | Command::Contact { out, .. }
+            | Command::Run { out, .. }
+            | Command::Steady { out, .. }
+            | Command::Validate { out, .. }
+            | Command::Sweep { out, .. } => Some(out),
+            Command::Examples { .. } => None,
+        }
+    }
+}
+
 /// Failures: bad input exits 2, a failed computation 1.
 enum Failure {
     Input(String),
@@ -244,6 +259,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
         set: vec![],
     });
     let quiet = cli.quiet;
+    if let Some(out) = command.out() {
+        // Before anything can fail: DIR then never holds an earlier command's results beside
+        // or instead of this one's, whether this one succeeds, fails or is refused.
+        wearfem::output::remove_earlier_outputs(out)?;
+    }
     match command {
         Command::Elastic {
             problem,

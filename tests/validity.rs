@@ -335,3 +335,50 @@ fn a_steep_step_in_body_1s_element_lengths_is_named() {
     let shipped = driver::contact(&builtin("punch-b40", &[])).unwrap().0;
     assert!(!named(&shipped));
 }
+
+/// A wear so large that the check's own contact solves fail (β̃ = 1e200: one half period
+/// wears ~1e201 mm) is where the half-period assumption fails worst: the check must say that
+/// it could not be made, and why, not vanish (review 10, F11). Both jobs, steady and run.
+#[test]
+fn a_half_period_check_that_cannot_be_made_says_so() {
+    let huge = builtin("punch-b40", &["wear.body1.beta=1e200"]);
+    let (state, contact, _) = driver::steady(&huge).unwrap();
+    let steady = validity::steady_checks(&huge, &contact, &state);
+    let run = driver::wear(&huge, Some(60), |_| {}).unwrap();
+    let run = validity::run_checks(&huge, &run);
+    for (job, warnings) in [("steady", steady), ("run", run)] {
+        let half_period: Vec<&String> = warnings
+            .iter()
+            .filter(|w| w.contains("one half period's wear changes the contact pressure"))
+            .collect();
+        assert_eq!(half_period.len(), 1, "{job}: {warnings:?}");
+        // Either measured (far above the limit) or not measured, with the reason.
+        let w = half_period[0];
+        assert!(
+            w.contains("could not check") && w.contains("failed") || w.contains("% of its peak"),
+            "{job}: {w}"
+        );
+    }
+}
+
+/// The reason of a check that cannot be made reaches the warning: a non-finite wear (here a
+/// pressure that is not finite) is named, and is not a change of 0.
+#[test]
+fn a_non_finite_half_period_wear_is_reported_as_unchecked() {
+    let p = builtin("punch-b40", &[]);
+    let (state, contact, _) = driver::steady(&p).unwrap();
+    let mut solver = ContactSolver::new(&contact, driver::method(&p).unwrap());
+    let integrator = WearIntegrator::new(p.spec.wear.as_ref().unwrap()).unwrap();
+    let infinite = vec![f64::INFINITY; state.p_plus.len()];
+    let pressures = [(Direction::Plus, &infinite[..])];
+    let why =
+        validity::half_period_pressure_change(&mut solver, &integrator, &state.shape, &pressures)
+            .unwrap_err();
+    assert!(why.contains("not finite"), "{why}");
+    let warning = validity::half_period_warning(&p, Err(why.clone())).unwrap();
+    assert!(
+        warning.starts_with(&format!("warning: {}: wear: could not check", p.file))
+            && warning.contains(&why),
+        "{warning}"
+    );
+}

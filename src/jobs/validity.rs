@@ -35,32 +35,50 @@ pub const GEOMETRY_LIMIT: f64 = 0.1;
 
 /// The largest change of the contact pressure that the wear of one half period (one step
 /// under monotonic sliding) causes, relative to the peak pressure: for each direction d with
-/// pressure p_d, the pressure of direction d at `shape` and at `shape` + ΔW(p_d). None when
-/// a solve fails or no pressure is positive. `pressures` are (direction, pressure in MPa).
+/// pressure p_d, the pressure of direction d at `shape` and at `shape` + ΔW(p_d). A direction
+/// without pressure wears nothing and changes nothing. `Err` says why the change could not be
+/// measured (a check solve failed, or the wear is not finite): exactly where the wear is large
+/// enough to break the solve, so the caller must say so, not drop the check.
+/// `pressures` are (direction, pressure in MPa).
 pub fn half_period_pressure_change(
     solver: &mut ContactSolver,
     integrator: &WearIntegrator,
     shape: &[f64],
     pressures: &[(Direction, &[f64])],
-) -> Option<f64> {
+) -> Result<f64, String> {
     let terms = integrator.half_period_wear();
     let mut worn = shape.to_vec();
     let mut change: f64 = 0.0;
     for &(direction, pressure) in pressures {
+        let d = direction.symbol();
         for ((w, g), p) in worn.iter_mut().zip(shape).zip(pressure) {
             *w = g + terms
                 .iter()
                 .map(|(c, b)| c * p.max(0.0).powf(*b))
                 .sum::<f64>();
         }
+        if worn.iter().any(|w| !w.is_finite()) {
+            return Err(format!(
+                "the wear of one '{d}' half period is not finite (β̃ and the pressure overflow)"
+            ));
+        }
         let (before, info_before) = solver.solve(shape, direction);
+        if info_before.status != Status::Solved {
+            return Err(format!(
+                "the contact solve of the '{d}' half cycle at the reported shape failed (complementarity residual {:.3e})",
+                info_before.complementarity
+            ));
+        }
         let (after, info_after) = solver.solve(&worn, direction);
-        if info_before.status != Status::Solved || info_after.status != Status::Solved {
-            return None;
+        if info_after.status != Status::Solved {
+            return Err(format!(
+                "the contact solve of the '{d}' half cycle at the shape worn by one more half period failed (complementarity residual {:.3e}): that wear is too large for the contact to carry the load as before",
+                info_after.complementarity
+            ));
         }
         let peak = before.pressure.iter().cloned().fold(0.0, f64::max);
         if peak <= 0.0 {
-            return None;
+            continue;
         }
         let largest = before
             .pressure
@@ -68,14 +86,28 @@ pub fn half_period_pressure_change(
             .zip(&after.pressure)
             .map(|(a, b)| (a - b).abs())
             .fold(0.0, f64::max);
+        if !largest.is_finite() {
+            return Err(format!(
+                "the '{d}' pressure at the worn shape is not finite"
+            ));
+        }
         change = change.max(largest / peak);
     }
-    Some(change)
+    Ok(change)
 }
 
-/// The warning for a [`half_period_pressure_change`] above [`HALF_PERIOD_CHANGE_LIMIT`].
-pub fn half_period_warning(problem: &Problem, change: Option<f64>) -> Option<String> {
-    let change = change?;
+/// The warning for a [`half_period_pressure_change`] above [`HALF_PERIOD_CHANGE_LIMIT`], or
+/// for one that could not be measured (why, from its `Err`).
+pub fn half_period_warning(problem: &Problem, change: Result<f64, String>) -> Option<String> {
+    let change = match change {
+        Ok(change) => change,
+        Err(why) => {
+            return Some(format!(
+                "warning: {}: wear: could not check whether one half period's wear changes the contact pressure (the half-period scheme and the steady state assume it does not): {why}. Such a failure comes with a very large wear; lower β̃ or the pressure, or check with wear.substeps (docs/validation.md, What a result says about itself)",
+                problem.file
+            ))
+        }
+    };
     (change > HALF_PERIOD_CHANGE_LIMIT).then(|| format!(
         "warning: {}: wear: one half period's wear changes the contact pressure by {:.1} % of its peak; the half-period scheme and the steady state hold the pressure constant over a half period, which is only right while that change is small (here the pressures can be off by about half of it). Lower β̃ or the pressure, or check with wear.substeps (docs/validation.md, What a result says about itself)",
         problem.file,

@@ -59,6 +59,9 @@ pub fn write_csv(
 
 pub use crate::jobs::json::{named, number, numbers};
 
+mod stale;
+pub use stale::remove_earlier_outputs;
+
 fn plot_error(path: &Path) -> impl Fn(String) -> OutputError + '_ {
     move |m| OutputError {
         path: path.display().to_string(),
@@ -230,21 +233,27 @@ pub fn write_wear(
         // Only a completed cycle has profiles worth writing.
         profiles.write(dir, "final.csv", &format!("{name}, last cycle"))?;
     }
-    let initial_gap = &run.contact.points.initial_gap;
+    // The wear of a snapshot is `run.wear_of`, as in summary.json and the ParaView files: with
+    // `wear.shape_zero_at` it is re-zeroed at x₀, which the shape of a '+' step (mid cycle, not
+    // shifted) is not, so shape minus initial gap would differ from the other files there.
     let rows: Vec<Vec<Value>> = h
         .snapshots
         .iter()
-        .flat_map(|s| (0..x.len()).map(move |i| (s, i)))
-        .map(|(s, i)| {
-            vec![
-                json!(s.step),
-                json!(s.half_period),
-                json!(s.direction),
-                number(x[i]),
-                number(s.pressure[i]),
-                number(s.shape[i]),
-                number(s.shape[i] - initial_gap[i]),
-            ]
+        .flat_map(|s| {
+            let wear = run.wear_of(&s.shape);
+            (0..x.len())
+                .map(|i| {
+                    vec![
+                        json!(s.step),
+                        json!(s.half_period),
+                        json!(s.direction),
+                        number(x[i]),
+                        number(s.pressure[i]),
+                        number(s.shape[i]),
+                        number(wear[i]),
+                    ]
+                })
+                .collect::<Vec<_>>()
         })
         .collect();
     write_csv(
