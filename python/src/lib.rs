@@ -64,7 +64,11 @@ fn to_toml(value: &Bound<'_, PyAny>, key: &str) -> PyResult<toml::Value> {
     }
     if value.is_instance_of::<PyInt>() {
         return value.extract().map(toml::Value::Integer).map_err(|_| {
-            set_error(py, key, format!("the integer {value} does not fit in 64 bits"))
+            set_error(
+                py,
+                key,
+                format!("the integer {value} does not fit in 64 bits"),
+            )
         });
     }
     if value.is_instance_of::<PyFloat>() {
@@ -421,5 +425,7 @@ fn _wearfem(m: &Bound<'_, PyModule>) -> PyResult<()> {
     // The library's build stamp (crate version + git commit), as summary.json's
     // `wearfem_version`: a wheel out of step with the command line shows it.
     m.add("__version__", wearfem::VERSION)?;
+    // A run's status when it completed no full cycle, as a study row says it.
+    m.add("_NO_CYCLE", sweep::NO_CYCLE)?;
     Ok(())
 }

@@ -245,3 +245,12 @@ def test_contact_warnings_reach_python():
     with pytest.warns(wearfem.WearfemWarning, match="ends inside an element of body 2"):
         c = problem.contact()
     assert c.warnings and c.summary["warnings"] == c.warnings
+
+
+def test_a_run_without_a_full_cycle_says_so_as_a_study_row(punch):
+    # One half period: converged (nothing failed) but no final profiles; the status says why,
+    # the same words as the study's row for the same overrides.
+    run = punch.run(steps=1)
+    assert run.converged and run.p_plus is None
+    table = wearfem.study(punch, [{"wear.steps": 1, "wear.record": []}], job="run")
+    assert run.status == table["status"][0] != "solved"

@@ -23,6 +23,7 @@ import numpy as np
 
 from ._wearfem import Problem as _Problem
 from ._wearfem import __version__
+from ._wearfem import _NO_CYCLE
 
 __all__ = [
     "Problem",
@@ -238,6 +239,9 @@ class RunResult(_Result):
             problems.append(
                 f"stopped at step {summary['stopped_at_step']}: {summary['stop_reason']}"
             )
+        if not problems and final is None:
+            # A converged run too short for one full cycle: no profiles (as a study row).
+            problems.append(_NO_CYCLE)
         self.status: str = ", ".join(problems) if problems else "solved"
         # As the command line's exit code: any failed, unconverged or oscillating step.
         stopped_early = summary.get("stop_reason", "the steady state was reached") != (
