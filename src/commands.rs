@@ -94,7 +94,10 @@ pub(crate) fn sweep(
         .into_iter()
         .collect::<Result<Vec<_>, _>>()
         .map_err(Failure::from)?;
-    let title = &variants[0].problem.spec.title;
+    // The file's own title: a `title` axis would otherwise give the study its first variant's.
+    let title = &wearfem::overrides::parse_spec(&text, &file, &[])
+        .map_err(input)?
+        .title;
     sweep::report::write(
         out,
         title,

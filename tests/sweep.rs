@@ -497,3 +497,21 @@ fn the_settings_check_refuses_no_problem_that_solves() {
         }
     }
 }
+
+#[test]
+fn a_title_axis_leaves_the_study_the_file_s_title() {
+    // The study's title is the file's own, not its first variant's (a red team's finding).
+    let dir = scratch("title");
+    let (code, _, err) = wearfem(&[
+        "sweep",
+        "punch-b40",
+        "--set",
+        "title=[\"first\", \"second\"]",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let file = variant("punch-b40", &[]).spec.title;
+    assert_eq!(json(&dir.join("sweep.json"))["title"], file.as_str());
+    let _ = std::fs::remove_dir_all(&dir);
+}
