@@ -166,28 +166,61 @@ fn parse_key(key: &str) -> Result<Vec<Segment>, ProblemError> {
             format!("{why}; a key is a dotted path such as plate.pin or bodies[1].blocks[0].u"),
         )
     };
+    let bare = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-';
     let mut path = Vec::new();
-    for part in key.split('.') {
-        let (name, mut rest) = part.split_at(part.find('[').unwrap_or(part.len()));
-        let bare = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-';
-        if name.is_empty() || !name.chars().all(bare) {
-            return Err(bad(&format!("\"{part}\" is not a key name")));
+    let mut rest = key;
+    loop {
+        // A name: bare (`steel`) or quoted as in TOML (`"st.eel 2"`, for names that are not
+        // bare keys; `\"` and `\\` inside).
+        let name;
+        if let Some(quoted) = rest.strip_prefix('"') {
+            let mut text = String::new();
+            let mut chars = quoted.char_indices();
+            let mut end = None;
+            while let Some((i, c)) = chars.next() {
+                match c {
+                    '"' => {
+                        end = Some(i);
+                        break;
+                    }
+                    '\\' => match chars.next() {
+                        Some((_, e @ ('"' | '\\'))) => text.push(e),
+                        _ => return Err(bad("only \\\" and \\\\ may follow \\ in a quoted name")),
+                    },
+                    c => text.push(c),
+                }
+            }
+            let end = end.ok_or_else(|| bad("unclosed \""))?;
+            name = text;
+            rest = &quoted[end + 1..];
+        } else {
+            let len = rest
+                .find(|c: char| c == '.' || c == '[')
+                .unwrap_or(rest.len());
+            let part = &rest[..len];
+            if part.is_empty() || !part.chars().all(bare) {
+                let shown = rest.split('.').next().unwrap_or(rest);
+                return Err(bad(&format!("\"{shown}\" is not a key name")));
+            }
+            name = part.to_string();
+            rest = &rest[len..];
         }
-        path.push(Segment::Key(name.to_string()));
-        while !rest.is_empty() {
-            let close = rest.find(']').ok_or_else(|| bad("unclosed ["))?;
-            let index = rest[1..close]
+        path.push(Segment::Key(name));
+        while let Some(inside) = rest.strip_prefix('[') {
+            let close = inside.find(']').ok_or_else(|| bad("unclosed ["))?;
+            let index = inside[..close]
                 .trim()
                 .parse::<usize>()
-                .map_err(|_| bad(&format!("\"{}\" is not an index", &rest[..=close])))?;
+                .map_err(|_| bad(&format!("\"[{}]\" is not an index", &inside[..close])))?;
             path.push(Segment::Index(index));
-            rest = &rest[close + 1..];
-            if !(rest.is_empty() || rest.starts_with('[')) {
-                return Err(bad(&format!("unexpected \"{rest}\" after an index")));
-            }
+            rest = &inside[close + 1..];
+        }
+        match rest.strip_prefix('.') {
+            Some(next) => rest = next,
+            None if rest.is_empty() => return Ok(path),
+            None => return Err(bad(&format!("unexpected \"{rest}\" after an index"))),
         }
     }
-    Ok(path)
 }
 
 /// Put `o.value` at `o`'s path in `table`; the error says why the path cannot be followed.
@@ -480,6 +513,42 @@ mod tests {
     }
 
     use super::*;
+
+    #[test]
+    fn a_name_that_is_not_a_bare_key_is_quoted_as_in_toml() {
+        // A red team's material `[materials."st.eel ü"]` could not be overridden.
+        let key = |k: &str| Override::new(k, toml::Value::Float(1.0)).map(|o| o.path);
+        let name = |n: &str| Segment::Key(n.into());
+        assert_eq!(
+            key(r#"materials."st.eel ü".young"#).unwrap(),
+            [name("materials"), name("st.eel ü"), name("young")]
+        );
+        assert_eq!(
+            key(r#"bodies[1]."a \"b\""[0]"#).unwrap(),
+            [
+                name("bodies"),
+                Segment::Index(1),
+                name("a \"b\""),
+                Segment::Index(0)
+            ]
+        );
+        for bad in [
+            r#"materials."steel.young"#,
+            "plate..pin",
+            "bodies[1]x",
+            r#"a."\q""#,
+        ] {
+            assert!(key(bad).is_err(), "{bad}");
+        }
+        // Applied to a file whose material is named so.
+        let text = crate::examples::example("lame")
+            .unwrap()
+            .replace("[materials.steel]", "[materials.\"st.eel ü\"]")
+            .replace("\"steel\"", "\"st.eel ü\"");
+        let set = Override::parse(r#"materials."st.eel ü".young=1.5e5"#).unwrap();
+        let spec = parse_spec(&text, "lame", &[set]).unwrap();
+        assert_eq!(spec.materials["st.eel ü"].young, 1.5e5);
+    }
 
     fn punch() -> &'static str {
         crate::examples::example("punch-b40").unwrap()
