@@ -194,9 +194,7 @@ fn parse_key(key: &str) -> Result<Vec<Segment>, ProblemError> {
             name = text;
             rest = &quoted[end + 1..];
         } else {
-            let len = rest
-                .find(|c: char| c == '.' || c == '[')
-                .unwrap_or(rest.len());
+            let len = rest.find(['.', '[']).unwrap_or(rest.len());
             let part = &rest[..len];
             if part.is_empty() || !part.chars().all(bare) {
                 let shown = rest.split('.').next().unwrap_or(rest);
