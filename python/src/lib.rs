@@ -354,6 +354,15 @@ impl PyProblem {
             .map_err(|e| problem_error(py, &e))
     }
 
+    /// The value at dotted `key` in the file with this problem's overrides applied, as JSON
+    /// text, or None where the file does not set it (the schema's default applies): a study
+    /// given as a list of dicts fills a variant's cell of a key it does not override with it.
+    fn _value_at(&self, py: Python<'_>, key: &str) -> PyResult<Option<String>> {
+        let value = wearfem::overrides::value_at(&self.text, &self.file, &self.overrides, key)
+            .map_err(|e| problem_error(py, &e))?;
+        Ok(value.map(|v| serde_json::to_string(&v).expect("a TOML value is JSON")))
+    }
+
     /// One variant of a study (`job`: "steady" or "run"): its row of `wearfem sweep`'s
     /// sweep.json as JSON text.
     fn _study_row(&self, py: Python<'_>, job: &str) -> PyResult<String> {

@@ -38,6 +38,20 @@ def test_study_rows_equal_single_solves(punch):
         assert table["p_plus_M"][i] == s.probes["M"] if "M" in s.probes else True
 
 
+def test_a_list_study_fills_keys_a_variant_does_not_override_from_the_file(punch):
+    """A red team's list study left None where a variant kept the file's value: a friction of
+    "None" for a solve at the file's 0.25 (examples/punch-b40.toml)."""
+    table = wearfem.study(punch, [{"contact.friction": 0.1}, {"plate.pin": [1100.0, 120.0]}])
+    assert list(table["contact.friction"]) == [0.1, 0.25]
+    assert [list(p) for p in table["plate.pin"]] == [[1100.0, 140.0], [1100.0, 120.0]]
+    # The second row is the file's friction solved: equal to the same variant set explicitly.
+    same = wearfem.study(punch, [{"contact.friction": 0.25, "plate.pin": [1100.0, 120.0]}])
+    assert table["peak_p_plus"][1] == same["peak_p_plus"][0]
+    # A key the file leaves to its default stays None (the file does not hold the value).
+    table = wearfem.study(punch, [{"contact.align_target_mesh": True}, {"contact.friction": 0.1}])
+    assert table["contact.align_target_mesh"][1] is None
+
+
 def test_study_equals_cli_sweep(punch, cli):
     proc, out = cli("sweep", "punch-b40", "--set", "contact.friction=[0.1, 0.3]", "--set", "plate.pin=[[1100, 120], [1100, 140]]")
     assert proc.returncode == 0, proc.stderr

@@ -117,7 +117,9 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
 
     Returns a pandas DataFrame (one row per variant, in grid order) when pandas is installed,
     else a dict of numpy arrays with the same columns: the override keys, then the columns of
-    :func:`solve_variant`.
+    :func:`solve_variant`. In a study given as a list, a variant that does not override a key
+    another does has the file's value in that column (None where the file does not set it and
+    the default applies).
     """
     if job not in ("steady", "run"):
         raise ValueError(f'job must be "steady" or "run", got {job!r}')
@@ -142,7 +144,7 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
                 f"first {warned[0]}"
             ]
         )
-    return _table(sets, rows)
+    return _table(sets, rows, problems)
 
 
 def _warn_all(lines: List[str]) -> None:
@@ -215,11 +217,13 @@ def _build(problem, sets: List[Dict[str, Any]], job: str, parallel: bool) -> lis
         return list(pool.map(checked, sets))
 
 
-def _table(sets: List[Dict[str, Any]], rows: List[Dict[str, Any]]):
+def _table(sets: List[Dict[str, Any]], rows: List[Dict[str, Any]], problems: list):
     columns: Dict[str, list] = {}
     keys = list(dict.fromkeys(k for s in sets for k in s))
     for k in keys:
-        columns[k] = [s.get(k) for s in sets]
+        # A study given as a list of dicts: a variant that does not override a key another
+        # does has the file's value there (None only where the file leaves it to its default).
+        columns[k] = [s[k] if k in s else _value_at(p, k) for s, p in zip(sets, problems)]
     result_keys = list(dict.fromkeys(k for r in rows for k in r))
     for k in result_keys:
         columns[k] = [r.get(k, np.nan) for r in rows]
@@ -228,6 +232,11 @@ def _table(sets: List[Dict[str, Any]], rows: List[Dict[str, Any]]):
     except ImportError:
         return {k: _column(v) for k, v in columns.items()}
     return pd.DataFrame(columns)
+
+
+def _value_at(problem, key: str):
+    text = problem._inner._value_at(key)
+    return None if text is None else json.loads(text)
 
 
 def _column(values: list) -> np.ndarray:

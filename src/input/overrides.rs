@@ -151,10 +151,24 @@ pub fn parse_value(text: &str) -> toml::Value {
     }
 }
 
-/// A TOML value as inline text.
+/// A TOML value as inline text, for labels and table cells. A finite float is written as the
+/// shortest text that reads back as the same number, with an exponent where that is shorter
+/// (`1e200`, `1e-30`, `0.25`): TOML's own text writes every digit (201 of them for 1e200).
 pub fn value_text(value: &toml::Value) -> String {
     match value {
         toml::Value::String(s) => s.clone(),
+        other => inline_text(other),
+    }
+}
+
+/// `value` as TOML inline text (strings quoted), floats as in [`value_text`].
+fn inline_text(value: &toml::Value) -> String {
+    match value {
+        toml::Value::Float(f) if f.is_finite() => format!("{f:?}"),
+        toml::Value::Array(items) => {
+            let items: Vec<String> = items.iter().map(inline_text).collect();
+            format!("[{}]", items.join(", "))
+        }
         other => other.to_string(),
     }
 }
@@ -483,8 +497,85 @@ pub fn apply_to_text(
     toml::to_string(&table).map_err(|e| error("(file)", one_line(&e.to_string())))
 }
 
+/// The value at `key` in a problem file's text with `overrides` applied: what a variant of a
+/// study has at a key that other variants override (None where the file does not set it and
+/// the schema's default applies).
+pub fn value_at(
+    text: &str,
+    file: &str,
+    overrides: &[Override],
+    key: &str,
+) -> Result<Option<toml::Value>, ProblemError> {
+    let error = |key: &str, message: String| ProblemError {
+        file: file.into(),
+        key: key.into(),
+        message,
+    };
+    let mut table: toml::Table =
+        toml::from_str(text).map_err(|e| error("(file)", one_line(e.message())))?;
+    for o in overrides {
+        apply(&mut table, o).map_err(|m| error(&o.key, m))?;
+    }
+    let mut here = None::<&toml::Value>;
+    for segment in parse_key(key)? {
+        let next = match (here, &segment) {
+            (None, Segment::Key(k)) => table.get(k),
+            (Some(toml::Value::Table(t)), Segment::Key(k)) => t.get(k),
+            (Some(toml::Value::Array(a)), Segment::Index(i)) => a.get(*i),
+            _ => None,
+        };
+        match next {
+            Some(value) => here = Some(value),
+            None => return Ok(None),
+        }
+    }
+    Ok(here.cloned())
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn value_at_reads_the_file_with_its_overrides() {
+        use super::{parse_value, value_at, Override};
+        let text = "[contact]\nfriction = 0.25\n[plate]\npin = [1100.0, 140.0]\n";
+        let set = |k: &str, v: &str| Override::new(k, parse_value(v)).unwrap();
+        let at = |overrides: &[Override], key| value_at(text, "t.toml", overrides, key).unwrap();
+        assert_eq!(at(&[], "contact.friction"), Some(parse_value("0.25")));
+        let moved = [set("plate.pin[1]", "150.0")];
+        assert_eq!(
+            at(&moved, "plate.pin"),
+            Some(parse_value("[1100.0, 150.0]"))
+        );
+        assert_eq!(at(&moved, "plate.pin[0]"), Some(parse_value("1100.0")));
+        // Not in the file: the schema's default applies, which the text does not hold.
+        assert_eq!(at(&[], "contact.discretisation"), None);
+        assert_eq!(at(&[], "plate.pin[5]"), None);
+    }
+
+    #[test]
+    fn value_text_is_short_and_reads_back_as_the_same_value() {
+        use super::{parse_value, value_text};
+        for (given, shown) in [
+            ("1e200", "1e200"),
+            ("1e-30", "1e-30"),
+            ("0.25", "0.25"),
+            ("1100.0", "1100.0"),
+            ("-3.5e-7", "-3.5e-7"),
+            ("[1100.0, 1e200]", "[1100.0, 1e200]"),
+            ("[\"a\", 2]", "[\"a\", 2]"),
+            ("\"exact\"", "exact"),
+            ("7", "7"),
+        ] {
+            let value = parse_value(given);
+            let text = value_text(&value);
+            assert_eq!(text, shown, "{given}");
+            if !matches!(value, toml::Value::String(_)) {
+                // A label or cell read back (as a --set value) is the value it labels.
+                assert_eq!(parse_value(&text), value, "{given}");
+            }
+        }
+    }
+
     #[test]
     fn a_wrong_type_in_the_file_names_its_dotted_key_and_line() {
         let text = "title = 1\n[analysis]\nkind = \"plane_stress\"\n[[bodies]]\nname = \"a\"\n[[bodies.blocks]]\nu = 1\n[[bodies.blocks]]\nu = 2\n[[bodies]]\nname = \"b\"\n[[bodies.blocks]]\nv = 3\n[contact]\nfriction = \"x\"\n";
