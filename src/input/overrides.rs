@@ -484,6 +484,20 @@ pub fn apply_to_text(
     file: &str,
     overrides: &[Override],
 ) -> Result<String, ProblemError> {
+    let table = applied_table(text, file, overrides)?;
+    toml::to_string(&table).map_err(|e| ProblemError {
+        file: file.into(),
+        key: "(file)".into(),
+        message: one_line(&e.to_string()),
+    })
+}
+
+/// A problem file's text read as a TOML table, with `overrides` applied.
+fn applied_table(
+    text: &str,
+    file: &str,
+    overrides: &[Override],
+) -> Result<toml::Table, ProblemError> {
     let error = |key: &str, message: String| ProblemError {
         file: file.into(),
         key: key.into(),
@@ -494,7 +508,7 @@ pub fn apply_to_text(
     for o in overrides {
         apply(&mut table, o).map_err(|m| error(&o.key, m))?;
     }
-    toml::to_string(&table).map_err(|e| error("(file)", one_line(&e.to_string())))
+    Ok(table)
 }
 
 /// The value at `key` in a problem file's text with `overrides` applied: what a variant of a
@@ -506,16 +520,7 @@ pub fn value_at(
     overrides: &[Override],
     key: &str,
 ) -> Result<Option<toml::Value>, ProblemError> {
-    let error = |key: &str, message: String| ProblemError {
-        file: file.into(),
-        key: key.into(),
-        message,
-    };
-    let mut table: toml::Table =
-        toml::from_str(text).map_err(|e| error("(file)", one_line(e.message())))?;
-    for o in overrides {
-        apply(&mut table, o).map_err(|m| error(&o.key, m))?;
-    }
+    let table = applied_table(text, file, overrides)?;
     let mut here = None::<&toml::Value>;
     for segment in parse_key(key)? {
         let next = match (here, &segment) {
