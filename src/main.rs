@@ -329,7 +329,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 println!("{}: {} contact points, peak pressure {:.4} MPa, {} iterations, complementarity {:.1e}, equilibrium {:.1e} → {}", p.file, contact.len(), peak, info.iterations, info.complementarity, info.equilibrium, out.display());
             }
             if let (false, Some(end)) = (solved, unbalanced) {
-                return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}): the loads cannot be balanced on this contact edge. The solver ended with all the pressure on the {end} contact point, the edge's corner: the moment of the load and of friction (μ·l_z with a pin) needs the pressure resultant beyond the edge, so the punch would tip. Refining the mesh does not help; lower contact.friction, move plate.pin closer to the contact, or centre the load. summary.json holds the status and residuals, and no values of the failed solve were written", info.complementarity, info.equilibrium)));
+                return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}): {}. summary.json holds the status and residuals, and no values of the failed solve were written", info.complementarity, info.equilibrium, driver::unbalanced_explanation(end))));
             }
             if info.status == wearfem::complementarity::Status::Failed {
                 return Err(Failure::Compute(format!("the contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}); summary.json holds the status and residuals, and no values of the failed solve were written. A solution may not exist: with a plate that rotates about a pin, friction moves the pressure resultant by μ·l_z, and if that leaves the contact the plate tips", info.complementarity, info.equilibrium)));
@@ -419,7 +419,15 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     println!("adaptive schedule: steady state reached at step {step}");
                 }
                 Some((step, reason)) => {
-                    return Err(Failure::Compute(format!("step {step}: {reason}; the run stopped there, and the {} steps before it were written to {} (nothing from step {step})", step - 1, out.display())));
+                    // A first step that fails on loads no pressure can balance says so.
+                    let why = match (step, reason) {
+                        (1, wearfem::wear::StopReason::FailedSolve { .. }) => {
+                            driver::unbalanced_loads(&p, &result.contact)
+                                .map(|why| format!(": {why}"))
+                        }
+                        _ => None,
+                    };
+                    return Err(Failure::Compute(format!("step {step}: {reason}; the run stopped there, and the {} steps before it were written to {} (nothing from step {step}){}", step - 1, out.display(), why.unwrap_or_default())));
                 }
                 None => {}
             }
@@ -466,6 +474,10 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     wearfem::steady::SteadySliding::Reciprocating => "If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists",
                     wearfem::steady::SteadySliding::Monotonic(_) => "With monotonic sliding the friction moment about the pin grows with μ; if it tips the plate onto an edge, no steady state of one rigid wear per step exists",
                 };
+                if let Some(why) = driver::unbalanced_loads(&p, &contact) {
+                    // No steady state and no run either: say why, not "run instead".
+                    return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written, because {why}", state.status, state.wear_residual)));
+                }
                 return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written. {hint}: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }
             let warnings = driver::steady_warnings(&p, &contact, &state);

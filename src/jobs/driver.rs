@@ -328,6 +328,41 @@ pub fn pressure_at_one_end(pressure: &[f64]) -> Option<&'static str> {
     }
 }
 
+/// What [`pressure_at_one_end`] means for the user: the loads cannot be balanced on the
+/// contact edge (`end`: "first" or "last" contact point), and what to change.
+pub fn unbalanced_explanation(end: &str) -> String {
+    format!("the loads cannot be balanced on this contact edge. The solver ended with all the pressure on the {end} contact point, the edge's corner: the moment of the load and of friction (μ·l_z with a pin) needs the pressure resultant beyond the edge, so the punch would tip. Refining the mesh does not help; lower contact.friction, move plate.pin closer to the contact, or centre the load")
+}
+
+/// Why a run or a steady state of `problem` that failed could not succeed, if the reason is
+/// loads that cannot be balanced: the first contact solve of each direction the problem
+/// slides in (the first only, under monotonic sliding), at the initial shape, failing with
+/// all its pressure at one end of the edge ([`pressure_at_one_end`]). The direction's symbol
+/// and [`unbalanced_explanation`]; None when every first solve succeeds or fails otherwise.
+/// Only used to explain a failure.
+pub fn unbalanced_loads(problem: &Problem, contact: &CondensedContact) -> Option<String> {
+    let first = direction(problem).ok()?;
+    let integrator = WearIntegrator::new(problem.spec.wear.as_ref()?).ok()?;
+    let directions = if integrator.is_monotonic() {
+        vec![first]
+    } else {
+        vec![Direction::Plus, Direction::Minus]
+    };
+    let mut solver = ContactSolver::new(contact, method(problem).ok()?);
+    directions.into_iter().find_map(|d| {
+        let (solution, info) = solver.solve(&contact.points.initial_gap, d);
+        if info.status == Status::Solved {
+            return None;
+        }
+        let end = pressure_at_one_end(&solution.pressure)?;
+        Some(format!(
+            "the first contact solve of the '{}' half cycle fails: {}",
+            d.symbol(),
+            unbalanced_explanation(end)
+        ))
+    })
+}
+
 /// The steady worn state of `problem` computed directly (no time integration), with the
 /// condensed contact problem it was computed on.
 pub fn steady(
