@@ -2,6 +2,7 @@
 
 pub mod driver;
 pub mod json;
+pub mod p_check;
 mod run;
 pub mod steady_check;
 pub mod sweep;

@@ -84,7 +84,7 @@ pub mod wear;
 // folders grouped them.
 pub use fe::{basis, dofs, elasticity, fields, geometry, loads, material, mesh, quadrature};
 pub use input::{examples, overrides, problem, schema, wear_units};
-pub use jobs::{driver, steady_check, sweep, validate, validity};
+pub use jobs::{driver, p_check, steady_check, sweep, validate, validity};
 pub use report::{deformation, output, plot, vtk};
 pub use solver::{capacitance, complementarity, dense, lemke, updated_lu};
 pub use steady_state::{monotonic_shape, paper_steady, spline_method, steady};

@@ -18,6 +18,10 @@ pub struct AnalysisSpec {
     /// "tensor" (default) or "trunk".
     #[serde(default = "default_space")]
     pub space: String,
+    /// Whether to check the first contact solve against one with every degree raised by 2
+    /// ([`crate::p_check`]); None: yes for `contact`, `run` and `steady`, no in studies.
+    #[serde(default)]
+    pub p_check: Option<bool>,
 }
 
 fn default_space() -> String {

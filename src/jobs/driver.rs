@@ -16,8 +16,8 @@ use std::time::Instant;
 pub use super::run::{wear, WearRun};
 pub use super::warnings::{
     coarse_zones_json, edge_ends_json, edge_ends_warning, model_warnings, penalty_warning,
-    run_warnings, steady_edge_ends, steady_warnings, target_mesh_json, target_mesh_note,
-    zone_warnings, STROKE_LIMIT,
+    run_warnings, steady_edge_ends, steady_warnings, study_steady_warnings, target_mesh_json,
+    target_mesh_note, zone_warnings, STROKE_LIMIT,
 };
 
 /// Errors of a job: bad input, or a computation that could not be carried out.
@@ -293,6 +293,7 @@ pub fn contact(
             &solution.rigid,
         ));
         warnings.extend(zone_warnings(problem, &contact, &[&solution.pressure]));
+        warnings.extend(crate::p_check::p_check_warnings(problem, &contact, true));
     }
     summary["warnings"] = json!(warnings);
     if info.status != Status::Solved {

@@ -133,8 +133,30 @@ pub fn wear(
 impl WearRun {
     /// Every warning about this run ([`run_warnings`]; its checks cost a few contact solves,
     /// made once): the console's warning lines and summary.json's `warnings`.
+    /// With the check of the resolution in p ([`crate::p_check`]) unless `analysis.p_check`
+    /// is false.
     pub fn warnings(&self, problem: &Problem) -> &[String] {
-        self.warnings.get_or_init(|| run_warnings(problem, self))
+        self.warnings.get_or_init(|| {
+            let mut warnings = run_warnings(problem, self);
+            warnings.extend(crate::p_check::p_check_warnings(
+                problem,
+                &self.contact,
+                true,
+            ));
+            warnings
+        })
+    }
+
+    /// The warnings of a study's run: as [`WearRun::warnings`], but the resolution in p is
+    /// checked only where `analysis.p_check` is true (it costs a set-up at p + 2).
+    pub fn study_warnings(&self, problem: &Problem) -> Vec<String> {
+        let mut warnings = run_warnings(problem, self);
+        warnings.extend(crate::p_check::p_check_warnings(
+            problem,
+            &self.contact,
+            false,
+        ));
+        warnings
     }
 
     /// The wear in `shape` (a shape of this run, mm): `shape` minus the initial gap (the

@@ -276,7 +276,7 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
             let (state, contact, _) = driver::steady(problem)?;
             let converged = state.status == crate::steady::SteadyStatus::Solved;
             let warnings = if converged {
-                driver::steady_warnings(problem, &contact, &state)
+                driver::study_steady_warnings(problem, &contact, &state)
             } else {
                 Vec::new()
             };
@@ -378,7 +378,7 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
                 }),
                 seconds: 0.0,
                 warnings: if converged {
-                    run.warnings(problem).to_vec()
+                    run.study_warnings(problem)
                 } else {
                     Vec::new()
                 },

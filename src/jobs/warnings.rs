@@ -233,8 +233,24 @@ pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<Stri
     warnings
 }
 
-/// Every warning about a steady state (see [`run_warnings`]).
+/// Every warning about a steady state (see [`run_warnings`]), with the check of the
+/// resolution in p ([`crate::p_check`]) unless `analysis.p_check` is false.
 pub fn steady_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    state: &crate::steady::SteadyState,
+) -> Vec<String> {
+    let mut warnings = study_steady_warnings(problem, contact, state);
+    if problem.spec.analysis.p_check.is_none() {
+        // A study checks only where the key is true; a single job unless it is false.
+        warnings.extend(crate::p_check::p_check_warnings(problem, contact, true));
+    }
+    warnings
+}
+
+/// The warnings of a study's steady state: as [`steady_warnings`], but the resolution in p
+/// is checked only where `analysis.p_check` is true (it costs a set-up at p + 2).
+pub fn study_steady_warnings(
     problem: &Problem,
     contact: &CondensedContact,
     state: &crate::steady::SteadyState,
@@ -246,5 +262,6 @@ pub fn steady_warnings(
         contact,
         &[&state.p_plus, &state.p_minus],
     ));
+    warnings.extend(crate::p_check::p_check_warnings(problem, contact, false));
     warnings
 }
