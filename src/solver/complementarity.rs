@@ -269,7 +269,7 @@ impl ContactSolver {
         if self.method != Method::Lemke && self.active_set(gap, direction, out, &mut info, bounded)
         {
             info.status = Status::Solved;
-            if bounded && self.route != Route::Reduced {
+            if bounded && !self.route.checks_every_gap() {
                 self.residual_bound(direction, out);
                 self.finish(direction, out, &mut info, true);
                 if info.status == Status::Solved {

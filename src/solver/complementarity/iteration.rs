@@ -1,10 +1,17 @@
 //! The iterations of a contact solve: the primal–dual active-set steps, Lemke's method when
 //! they cycle, and the residual check that decides whether a solve counts as solved.
 
-use super::reduced::Route;
 use super::{ContactSolution, ContactSolver, Direction, SolveInfo, Status, ACCEPTED_RESIDUAL};
 use crate::dense::dot;
 use crate::lemke::lemke;
+
+/// The indices from the first to the last non-zero force (empty if none is).
+pub(super) fn force_span(force: &[f64]) -> std::ops::Range<usize> {
+    match force.iter().position(|&f| f != 0.0) {
+        Some(first) => first..force.iter().rposition(|&f| f != 0.0).expect("one is") + 1,
+        None => 0..0,
+    }
+}
 
 impl ContactSolver {
     pub(super) fn active_set(
@@ -29,7 +36,7 @@ impl ContactSolver {
                 return false;
             }
             if !self.update_active(out) {
-                if !(bounded && self.route != Route::Reduced) {
+                if !bounded || self.route.checks_every_gap() {
                     self.compute_gap(gap, dir, out);
                 }
                 self.factors[0].cache[dir]
@@ -63,17 +70,28 @@ impl ContactSolver {
     /// d = A_s P + R λ + g at every point (the penalty compliance excluded: d is the true
     /// gap).
     pub(super) fn compute_gap(&self, gap: &[f64], dir: usize, out: &mut ContactSolution) {
+        let span = force_span(&out.force);
         for i in 0..self.n {
-            out.gap[i] = self.gap_at(gap, dir, out, i);
+            out.gap[i] = self.gap_at(gap, dir, out, i, span.clone());
         }
     }
 
-    /// d_i = (A_s P + R λ + g)_i − c_i P_i (c the penalty compliance).
-    pub(super) fn gap_at(&self, gap: &[f64], dir: usize, out: &ContactSolution, i: usize) -> f64 {
+    /// d_i = (A_s P + R λ + g)_i − c_i P_i (c the penalty compliance). `span` holds every
+    /// non-zero force ([`force_span`]): A_s P is summed over it alone, so that a zone that
+    /// covers a small part of a long contact edge (a pin's, early in its wear) costs its own
+    /// length per gap, not the edge's.
+    pub(super) fn gap_at(
+        &self,
+        gap: &[f64],
+        dir: usize,
+        out: &ContactSolution,
+        i: usize,
+        span: std::ops::Range<usize>,
+    ) -> f64 {
         let (n, m) = (self.n, self.m);
         let row = &self.a[dir][i * n..(i + 1) * n];
         gap[i] - self.penalty_compliance[i] * out.force[i]
-            + dot(row, &out.force)
+            + dot(&row[span.clone()], &out.force[span])
             + dot(&self.r[i * m..(i + 1) * m], &out.rigid)
     }
 

@@ -7,19 +7,66 @@ use crate::capacitance::{block_maxima, Capacitance};
 use crate::dense::DenseLu;
 
 pub(super) struct Cached {
+    /// The last solve's final active set: where the next solve starts.
     pub(super) active: Vec<bool>,
+    /// The points whose reduced system `lu` holds (ascending): an active set padded with
+    /// [`padding`] points on either side of each of its runs along the edge, so that a zone
+    /// that grows or shrinks by a few points is solved with `lu` and a correction for the
+    /// padding out of contact instead of a refactorisation.
+    pub(super) base: Vec<usize>,
     pub(super) lu: DenseLu,
     pub(super) valid: bool,
+    /// The correction of `lu` for the base's points out of contact (indices into `base`).
+    correction: Capacitance,
+    /// The first unknown of each block of `lu`'s system (the forces, each rigid unknown).
+    blocks: Vec<usize>,
+    /// The correction's multipliers (gaps of the base's points out of contact), by position
+    /// in `base`; the gaps used are recomputed from the solution.
+    multipliers: Vec<f64>,
+    /// Positions in `base` of the points out of contact.
+    local_inactive: Vec<usize>,
 }
 
 impl Cached {
     pub(super) fn empty() -> Cached {
         Cached {
             active: vec![],
+            base: vec![],
             lu: DenseLu::default(),
             valid: false,
+            correction: Capacitance::default(),
+            blocks: vec![],
+            multipliers: vec![],
+            local_inactive: vec![],
         }
     }
+
+    /// Whether `lu` can solve active set `active`: every point in contact is in the base,
+    /// and the base's points out of contact are few enough for the correction (at most a
+    /// third of the base, or twice the padding: the columns of the padding are made once per
+    /// factorisation and kept).
+    fn covers(&self, active: &[bool], padding: usize) -> bool {
+        if !self.valid {
+            return false;
+        }
+        let mut in_base = 0;
+        let mut base = self.base.iter().peekable();
+        for (i, &a) in active.iter().enumerate() {
+            let member = base.next_if_eq(&&i).is_some();
+            if a && !member {
+                return false;
+            }
+            in_base += usize::from(a && member);
+        }
+        let out = self.base.len() - in_base;
+        out <= (self.base.len() / 3).max(2 * padding)
+    }
+}
+
+/// Points of padding on either side of each run of points in contact: an eighth of an
+/// element's points at p = 8 … 1/32 of the edge, at least 8 (see [`Cached::base`]).
+fn padding(n: usize) -> usize {
+    (n / 32).max(8)
 }
 
 /// The all-active reduced system of one direction, factorised on first use.
@@ -51,6 +98,17 @@ pub(super) enum Route {
     Corrected,
     /// With the reduced system's own factorisation.
     Reduced,
+    /// With the factorisation of a padded set's reduced system and its capacitance
+    /// correction for the padding out of contact.
+    Padded,
+}
+
+impl Route {
+    /// Whether a solve by this route is checked by computing every gap (the residual bound
+    /// of [`ContactSolver::solve_pressures_into`] covers the all-active routes only).
+    pub(super) fn checks_every_gap(self) -> bool {
+        matches!(self, Route::Reduced | Route::Padded)
+    }
 }
 
 /// The factorisations that belong to one diagonal compliance (see
@@ -276,31 +334,66 @@ impl ContactSolver {
             }
         }
         self.route = Route::Reduced;
-        let cached = &self.factors[0].cache[dir];
-        if !cached.valid || cached.active != out.active {
+        // Without the correction (the retry of a corrected solve that missed), the reduced
+        // system of exactly the active set; so too with no more points in contact than rigid
+        // unknowns, where the reduced system is singular by its structure: its own LU finds
+        // an exact zero pivot, the correction only a small C that round-off leaves regular
+        // (a tipping punch then iterated on garbage instead of stopping).
+        let padded = self.correct && out.active.iter().filter(|&&a| a).count() > m;
+        let usable = if padded {
+            self.factors[0].cache[dir].covers(&out.active, padding(n))
+        } else {
+            let cached = &self.factors[0].cache[dir];
+            cached.valid && cached.base.iter().all(|&i| out.active[i]) && {
+                cached.base.len() == out.active.iter().filter(|&&a| a).count()
+            }
+        };
+        if !usable {
             let active = std::mem::take(&mut out.active);
-            self.factorise(dir, &active);
+            self.factorise(dir, &active, padded);
             out.active = active;
             info.factorisations += 1;
             if !self.factors[0].cache[dir].valid {
                 return false;
             }
         }
-        // Right-hand side [−g_A; −L] and solve.
-        self.index.clear();
-        self.index.extend((0..n).filter(|&i| out.active[i]));
+        // Right-hand side [−g_B; −L] over the base B and solve; the base's points out of
+        // contact through the correction.
+        let cache = &mut self.factors[0].cache[dir];
         self.rhs.clear();
-        self.rhs.extend(self.index.iter().map(|&i| -gap[i]));
+        self.rhs.extend(cache.base.iter().map(|&i| -gap[i]));
         self.rhs
             .extend(self.load.iter().zip(&self.rigid_scale).map(|(l, s)| -l * s));
-        let size = self.index.len() + m;
-        self.factors[0].cache[dir]
-            .lu
-            .solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
+        let size = cache.base.len() + m;
+        cache.local_inactive.clear();
+        cache
+            .local_inactive
+            .extend((0..cache.base.len()).filter(|&k| !out.active[cache.base[k]]));
+        if cache.local_inactive.is_empty() {
+            cache
+                .lu
+                .solve_in_place(&mut self.rhs, &mut self.scratch[..size]);
+        } else {
+            self.route = Route::Padded;
+            cache.multipliers.resize(cache.base.len(), 0.0);
+            let solved = cache.correction.solve(
+                &cache.lu,
+                &cache.local_inactive,
+                &cache.blocks,
+                &mut self.rhs,
+                &mut cache.multipliers,
+                &mut self.scratch[..size],
+            );
+            if !solved {
+                return false;
+            }
+        }
         if self.rhs.iter().any(|v| !v.is_finite()) {
             return false;
         }
         out.force.iter_mut().for_each(|f| *f = 0.0);
+        self.index.clear();
+        self.index.extend_from_slice(&cache.base);
         for (k, &i) in self.index.iter().enumerate() {
             out.force[i] = self.rhs[k];
         }
@@ -311,26 +404,53 @@ impl ContactSolver {
         ) {
             *o = v * s;
         }
+        let span = super::iteration::force_span(&out.force);
         for &i in &self.inactive {
-            out.gap[i] = self.gap_at(gap, dir, out, i);
+            out.gap[i] = self.gap_at(gap, dir, out, i, span.clone());
         }
         true
     }
 
-    /// Build and factorise the reduced system [A_AA R_A; E_A 0] for active set `active`.
-    pub(super) fn factorise(&mut self, dir: usize, active: &[bool]) {
-        self.index.clear();
-        self.index.extend((0..self.n).filter(|&i| active[i]));
+    /// Build and factorise the reduced system [A_BB R_B; E_B 0] of the base B of active
+    /// set `active`: the set padded along the edge ([`Cached::base`]) if `padded`, else or
+    /// where the padded system is singular the set itself.
+    pub(super) fn factorise(&mut self, dir: usize, active: &[bool], padded: bool) {
+        let n = self.n;
+        let exact: Vec<usize> = (0..n).filter(|&i| active[i]).collect();
+        let mut bases = vec![exact.clone()];
+        if padded {
+            let pad = padding(n);
+            let mut padded = vec![false; n];
+            for &i in &exact {
+                for flag in &mut padded[i.saturating_sub(pad)..(i + pad + 1).min(n)] {
+                    *flag = true;
+                }
+            }
+            let padded: Vec<usize> = (0..n).filter(|&i| padded[i]).collect();
+            if padded.len() > exact.len() {
+                bases.insert(0, padded);
+            }
+        }
         let cache = &mut self.factors[0].cache[dir];
-        cache.valid = reduced_system(
-            &mut cache.lu,
-            &self.a[dir],
-            &self.e[dir],
-            &self.r,
-            &self.rigid_scale,
-            &self.index,
-            (self.n, self.m),
-        );
+        for base in bases {
+            cache.valid = reduced_system(
+                &mut cache.lu,
+                &self.a[dir],
+                &self.e[dir],
+                &self.r,
+                &self.rigid_scale,
+                &base,
+                (n, self.m),
+            );
+            cache.blocks.clear();
+            cache.blocks.push(0);
+            cache.blocks.extend(base.len()..base.len() + self.m);
+            cache.base = base;
+            cache.correction = Capacitance::default();
+            if cache.valid {
+                break;
+            }
+        }
         cache.active.clear();
         cache.active.extend_from_slice(active);
     }
