@@ -287,7 +287,7 @@ pub(crate) fn steady_by(
     }
     let state = &outcome.state;
     let mut warnings = driver::zone_warnings(p, &contact, &[&state.p_plus, &state.p_minus]);
-    warnings.extend(wearfem::p_check::p_check_warnings(p, &contact, true));
+    warnings.extend(wearfem::p_check::resolution_warnings(p, &contact, true));
     match outcome.distance_from_exact {
         Some(d) if d > wearfem::steady_check::STEADY_PRESSURE_LIMIT => warnings.push(format!(
             "warning: {}: the {} method's pressures are {:.2} % of the peak from the exact steady state (`--method exact`): the paper's §6 methods approximate it (docs/validation.md)",

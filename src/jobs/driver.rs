@@ -293,7 +293,7 @@ pub fn contact(
             &solution.rigid,
         ));
         warnings.extend(zone_warnings(problem, &contact, &[&solution.pressure]));
-        warnings.extend(crate::p_check::p_check_warnings(problem, &contact, true));
+        warnings.extend(crate::p_check::resolution_warnings(problem, &contact, true));
     }
     summary["warnings"] = json!(warnings);
     if info.status != Status::Solved {

@@ -138,7 +138,7 @@ impl WearRun {
     pub fn warnings(&self, problem: &Problem) -> &[String] {
         self.warnings.get_or_init(|| {
             let mut warnings = run_warnings(problem, self);
-            warnings.extend(crate::p_check::p_check_warnings(
+            warnings.extend(crate::p_check::resolution_warnings(
                 problem,
                 &self.contact,
                 true,
@@ -151,7 +151,7 @@ impl WearRun {
     /// checked only where `analysis.p_check` is true (it costs a set-up at p + 2).
     pub fn study_warnings(&self, problem: &Problem) -> Vec<String> {
         let mut warnings = run_warnings(problem, self);
-        warnings.extend(crate::p_check::p_check_warnings(
+        warnings.extend(crate::p_check::resolution_warnings(
             problem,
             &self.contact,
             false,

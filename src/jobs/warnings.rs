@@ -242,8 +242,10 @@ pub fn steady_warnings(
 ) -> Vec<String> {
     let mut warnings = study_steady_warnings(problem, contact, state);
     if problem.spec.analysis.p_check.is_none() {
-        // A study checks only where the key is true; a single job unless it is false.
-        warnings.extend(crate::p_check::p_check_warnings(problem, contact, true));
+        // A study checks p only where the key is true; a single job unless it is false (the
+        // depth is checked in both, by `study_steady_warnings`).
+        let check = crate::p_check::p_check(problem, contact);
+        warnings.extend(crate::p_check::p_check_warning(problem, check));
     }
     warnings
 }
@@ -262,6 +264,6 @@ pub fn study_steady_warnings(
         contact,
         &[&state.p_plus, &state.p_minus],
     ));
-    warnings.extend(crate::p_check::p_check_warnings(problem, contact, false));
+    warnings.extend(crate::p_check::resolution_warnings(problem, contact, false));
     warnings
 }
