@@ -58,7 +58,15 @@ proptest! {
         // And independently of them: p ≥ 0, d ≥ 0 and p d = 0 point by point, with d in mm
         // and p in MPa scaled by the largest of each (round-off bounds again).
         let peak = exact.pressure.iter().cloned().fold(0.0, f64::max);
-        let span = exact.gap.iter().cloned().fold(0.0f64, |a, d| a.max(d.abs())).max(1e-12);
+        // The gaps' scale is that of the worn shape, not of the solution's gaps: with every
+        // point in contact those are all round-off (1e-17 mm), and a case proptest found
+        // then failed d ≥ −1e-10 max|d| on round-off alone. 1 µm is a floor for a shape
+        // that is nearly flat (the elastic approach under the load is about 10 µm).
+        let span = exact
+            .gap
+            .iter()
+            .chain(&gap)
+            .fold(1e-3f64, |a, d| a.max(d.abs()));
         for (p, d) in exact.pressure.iter().zip(&exact.gap) {
             prop_assert!(*p >= -1e-10 * peak);
             prop_assert!(*d >= -1e-10 * span);
