@@ -17,12 +17,15 @@ const RECORD: &str = "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]";
 /// punch-b40 with `elements` under the punch, `steps` steps, all recorded, `extra` appended
 /// to `[wear]`.
 fn punch(elements: usize, steps: usize, extra: &str) -> Problem {
+    Problem::from_toml(&punch_text(elements, steps, extra), "adaptive test").expect("valid")
+}
+
+/// The problem file of [`punch`].
+fn punch_text(elements: usize, steps: usize, extra: &str) -> String {
     let text = wearfem::examples::refined_punch("punch-b40", elements).expect("punch-b40");
     let list: Vec<String> = (1..=steps).map(|s| s.to_string()).collect();
-    let text = text
-        .replace("steps = 1700 ", &format!("steps = {steps} "))
-        .replace(RECORD, &format!("record = [{}]\n{extra}", list.join(", ")));
-    Problem::from_toml(&text, "adaptive test").expect("valid problem")
+    text.replace("steps = 1700 ", &format!("steps = {steps} "))
+        .replace(RECORD, &format!("record = [{}]\n{extra}", list.join(", ")))
 }
 
 /// The steady pressures p⁺, p⁻ (MPa) of `elements` and their peak.
@@ -160,6 +163,32 @@ fn adaptive_schedule_beats_the_papers_on_a_refined_mesh() {
 #[test]
 fn step_doubling_beats_the_papers_schedule_too() {
     fewer_half_periods_than_the_paper(8, "method = \"step_doubling\"");
+}
+
+#[test]
+fn adaptive_runs_started_with_minus_sliding_reach_the_steady_state_as_fast() {
+    // Red team 15: step doubling compared the coarse cycle's pressures stored by half with
+    // the fine cycle's stored by direction, so a run started with '−' compared p⁺ with p⁻,
+    // rejected every macro step and stayed at k = 1 (4000 steps: 4000 half periods of the
+    // 14 654 needed). The mirror start differs from '+' by one half period of transient, and
+    // a run is compared once per cycle of up to 64 half periods.
+    let reference = steady(8);
+    for method in ["step_doubling", "bdf2"] {
+        let adaptive = format!("\n[wear.adaptive]\nmethod = \"{method}\"\nmax_factor = 32");
+        let text = punch_text(8, 4000, &adaptive);
+        assert!(text.contains("friction = 0.25\n"));
+        let minus = text.replace("friction = 0.25\n", "friction = 0.25\ndirection = \"-\"\n");
+        let plus = Problem::from_toml(&text, "plus").expect("valid problem");
+        let minus = Problem::from_toml(&minus, "minus").expect("valid problem");
+        let (from_plus, from_minus) = (
+            reach(&run(&plus), &reference),
+            reach(&run(&minus), &reference),
+        );
+        assert!(
+            (from_plus - from_minus).abs() <= 64.0,
+            "{method}: '+' {from_plus}, '−' {from_minus} half periods"
+        );
+    }
 }
 
 /// `name` refined to 32 elements under the punch with `edit` applied, run with the adaptive

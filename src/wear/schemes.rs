@@ -10,7 +10,8 @@ pub(super) struct StepDoubling {
     pub(super) fine_cycles: usize,
     /// Whether the next macro step starts from the Richardson extrapolation 2 g_f − g_c.
     pub(super) extrapolate: bool,
-    /// The coarse cycle's shape (mm) and pressures of its two half cycles (MPa).
+    /// The coarse cycle's shape (mm) and pressures of its two half cycles (MPa): '+' then
+    /// '−' (the one direction under monotonic sliding first), whichever ran first.
     pub(super) shape: Vec<f64>,
     pub(super) pressure: [Vec<f64>; 2],
     /// The last macro step's pressures of the two half cycles (MPa).

@@ -282,7 +282,11 @@ impl WearIntegrator {
             if count.first_failure.is_some() {
                 return;
             }
-            doubling.pressure[half].copy_from_slice(&ws.solution.pressure);
+            // Stored by direction ('+' first), as the fine cycle's pressures it is compared
+            // with are: by half, a run started with '−' compared p⁺ with p⁻, rejected every
+            // macro step and never left k = 1 (red team 15).
+            let slot = usize::from(!monotonic && direction == Direction::Minus);
+            doubling.pressure[slot].copy_from_slice(&ws.solution.pressure);
         }
         if let Some(weights) = zero_at {
             shift_to_zero(&mut doubling.shape, weights, points);
