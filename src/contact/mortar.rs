@@ -164,16 +164,7 @@ pub(super) fn break_points(
             if fa * fb >= 0.0 {
                 continue;
             }
-            let (mut lo, mut hi) = (-1.0, 1.0);
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                if (side(mid) < 0.0) == (fa < 0.0) {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            breaks.push(0.5 * (lo + hi));
+            breaks.push(crate::geometry::bisect(side, -1.0, 1.0, 60));
         }
     }
     breaks.sort_by(f64::total_cmp);

@@ -357,6 +357,23 @@ impl Block {
     }
 }
 
+/// The point in [lo, hi] where `f` changes sign (it must differ in sign at the two ends), by
+/// `iterations` bisections: 60 reach the round-off of an edge parameter in [−1, 1]. Used to
+/// find where an edge crosses a line or a coordinate, where bisection cannot leave the edge.
+pub fn bisect(f: impl Fn(f64) -> f64, lo: f64, hi: f64, iterations: usize) -> f64 {
+    let negative_at_lo = f(lo) < 0.0;
+    let (mut a, mut b) = (lo, hi);
+    for _ in 0..iterations {
+        let mid = 0.5 * (a + b);
+        if (f(mid) < 0.0) == negative_at_lo {
+            a = mid;
+        } else {
+            b = mid;
+        }
+    }
+    0.5 * (a + b)
+}
+
 fn det2(j: &[[f64; 2]; 2]) -> f64 {
     j[0][0] * j[1][1] - j[0][1] * j[1][0]
 }

@@ -49,16 +49,7 @@ impl Mesh {
             } else if fb.abs() <= scale {
                 1.0
             } else if fa * fb < 0.0 {
-                let (mut lo, mut hi) = (-1.0, 1.0);
-                for _ in 0..80 {
-                    let mid = 0.5 * (lo + hi);
-                    if (side(mid) < 0.0) == (fa < 0.0) {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                0.5 * (lo + hi)
+                crate::geometry::bisect(side, -1.0, 1.0, 80)
             } else {
                 continue;
             };
