@@ -470,10 +470,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let (state, contact, seconds) = driver::steady(&p)?;
             if state.status != wearfem::steady::SteadyStatus::Solved {
                 // Nothing from an unconverged iteration is written as a result.
-                let hint = match state.sliding {
-                    wearfem::steady::SteadySliding::Reciprocating => "If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists",
-                    wearfem::steady::SteadySliding::Monotonic(_) => "With monotonic sliding the friction moment about the pin grows with μ; if it tips the plate onto an edge, no steady state of one rigid wear per step exists",
-                };
+                let hint = wearfem::steady::failure_hint(state.sliding, contact.friction);
                 if let Some(why) = driver::unbalanced_loads(&p, &contact) {
                     // No steady state and no run either: say why, not "run instead".
                     return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written, because {why}", state.status, state.wear_residual)));

@@ -393,6 +393,70 @@ fn model_limits_are_warned_about() {
         monotonic.contains("wear.body2 under monotonic sliding"),
         "{monotonic}"
     );
+    // Body 2 wearing under a crowned pad whose zone (2.2 mm) is far shorter than its edge
+    // (60 mm): the stroke is measured against the zone (red team 13, F3), 2u₀ = 5.8 mm warns,
+    // 0.1 mm (5 % of the zone) does not.
+    let pad = |sets: &[&str]| {
+        let out = std::env::temp_dir().join(format!("wearfem-pad-{}", std::process::id()));
+        let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"));
+        cmd.args([
+            "run",
+            "tests/problems/crowned-pad-long-stroke.toml",
+            "--out",
+        ])
+        .arg(&out);
+        for s in sets {
+            cmd.args(["--set", s]);
+        }
+        let result = cmd.output().unwrap();
+        let _ = std::fs::remove_dir_all(&out);
+        String::from_utf8_lossy(&result.stderr).into_owned()
+    };
+    let long = pad(&[]);
+    assert!(
+        long.contains("of the contact zone's") && long.contains("body 2 wears"),
+        "{long}"
+    );
+    assert!(!pad(&["wear.amplitude=0.05"]).contains("wear.amplitude"));
+}
+
+/// A load on the plate edge of a fixed plate is carried by the plate and does not reach the
+/// contact: the model's definition, said aloud, since the zero pressure beside the reported
+/// plate force otherwise reads as a result (red team 13, F2).
+#[test]
+fn a_load_on_a_fixed_plate_is_said_to_be_carried_by_it() {
+    for job in ["contact", "run"] {
+        let out = std::env::temp_dir().join(format!("wearfem-fixed-{}-{job}", std::process::id()));
+        let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args([job, "tests/problems/fixed-plate-load.toml"])
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        let summary = std::fs::read_to_string(out.join("summary.json")).unwrap_or_default();
+        let _ = std::fs::remove_dir_all(&out);
+        assert!(
+            stderr.contains("are carried by the fixed plate and do not load the contact"),
+            "{job}: {stderr}"
+        );
+        assert!(summary.contains("carried by the fixed plate"), "{job}");
+    }
+    // A side load on body 1 under a fixed plate does load the contact: no such warning.
+    let out = std::env::temp_dir().join(format!("wearfem-fixed-side-{}", std::process::id()));
+    let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .args([
+            "contact",
+            "tests/problems/fixed-plate-side-load.toml",
+            "--out",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let _ = std::fs::remove_dir_all(&out);
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("fixed plate"), "{stderr}");
 }
 
 /// A soft penalty (contact.method = "penalty") is said to be soft: c_n = 1e5 MPa/mm on

@@ -15,9 +15,9 @@ use std::time::Instant;
 
 pub use super::run::{wear, WearRun};
 pub use super::warnings::{
-    coarse_zones_json, edge_ends_json, edge_ends_warning, model_warnings, penalty_warning,
-    run_warnings, steady_edge_ends, steady_warnings, study_steady_warnings, target_mesh_json,
-    target_mesh_note, zone_warnings, STROKE_LIMIT,
+    coarse_zones_json, edge_ends_json, edge_ends_warning, fixed_plate_load_warning, model_warnings,
+    penalty_warning, run_warnings, steady_edge_ends, steady_warnings, study_steady_warnings,
+    target_mesh_json, target_mesh_note, zone_warnings, STROKE_LIMIT,
 };
 
 /// Errors of a job: bad input, or a computation that could not be carried out.
@@ -286,6 +286,7 @@ pub fn contact(
     // The console's warning lines, also for Python: the zone diagnostics describe a
     // solution, so a failed solve gets none.
     let mut warnings: Vec<String> = penalty_warning(problem, &contact).into_iter().collect();
+    warnings.extend(fixed_plate_load_warning(problem, &contact));
     if info.status == Status::Solved {
         warnings.extend(super::validity::plate_motion_warning(
             problem,

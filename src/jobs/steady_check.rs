@@ -88,8 +88,9 @@ pub fn check(
     };
     if state.status != SteadyStatus::Solved {
         return SteadyCheck::Unavailable(format!(
-            "the steady solve ended with {:?} (no steady state of this form may exist)",
-            state.status
+            "the steady solve ended with {:?} ({})",
+            state.status,
+            crate::steady::failure_hint(sliding, contact.friction)
         ));
     }
     let pairs: Vec<(&[f64], &[f64])> = if integrator.is_monotonic() {

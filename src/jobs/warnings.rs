@@ -157,14 +157,36 @@ pub const STROKE_LIMIT: f64 = 0.1;
 /// that is not small against the contact edge (the contact pairs never move), and body 2
 /// wearing under monotonic sliding (its wear is kept at the partner points, while in reality
 /// it is spread over the whole track).
-pub fn model_warnings(problem: &Problem, contact: &CondensedContact) -> Vec<String> {
+pub fn model_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    pressures: &[&[f64]],
+) -> Vec<String> {
+    let mut warnings: Vec<String> = fixed_plate_load_warning(problem, contact)
+        .into_iter()
+        .collect();
     let Some(wear) = problem.spec.wear.as_ref() else {
-        return Vec::new();
+        return warnings;
     };
-    let mut warnings = Vec::new();
     let x = &contact.points.x;
     let length: f64 = x.windows(2).map(|w| dist(w[0], w[1])).sum();
-    if wear.sliding != "monotonic" && 2.0 * wear.amplitude > STROKE_LIMIT * length {
+    let stroke = 2.0 * wear.amplitude;
+    let zone = zone_length(x, pressures);
+    if wear.sliding != "monotonic" && wear.body2.is_some() && stroke <= STROKE_LIMIT * length {
+        // Body 2's wear lands on the partner points under the zone, while its real track is
+        // the zone swept over the stroke: against the zone, not the edge (red team 13, F3: a
+        // crowned pad sliding 2.5 zone widths wore body 2 at the track's centre about 3 times
+        // faster than the same wear spread over the track, without a word).
+        if zone > 0.0 && stroke > STROKE_LIMIT * zone {
+            warnings.push(format!(
+                "warning: {}: wear.amplitude: the stroke 2u₀ = {stroke:.4} mm is {:.0} % of the contact zone's {zone:.4} mm and body 2 wears: the model keeps its wear at the partner points under the zone, while in reality it is spread over a track the stroke longer (README, Fixed contact pairs); body 2's worn depth is overstated up to about (2u₀ + zone)/zone = {:.1} times",
+                problem.file,
+                100.0 * stroke / zone,
+                (stroke + zone) / zone
+            ));
+        }
+    }
+    if wear.sliding != "monotonic" && stroke > STROKE_LIMIT * length {
         warnings.push(format!(
             "warning: {}: wear.amplitude: the stroke 2u₀ = {:.4} mm is {:.0} % of the contact edge's {:.4} mm; the model keeps each contact point's partner fixed, which stands for a stroke small against the contact (README, Fixed contact pairs), so these results describe a shorter stroke",
             problem.file,
@@ -180,6 +202,59 @@ pub fn model_warnings(problem: &Problem, contact: &CondensedContact) -> Vec<Stri
         ));
     }
     warnings
+}
+
+/// A warning when `plate.motion = "fixed"` and tractions act on the plate edge: the fixed
+/// plate carries them and they do not load the contact (a negative initial gap and the
+/// tractions on body 1's other edges do). The model is documented, but a load written beside
+/// a zero pressure, without a word, reads as a result (red team 13: 6 kN on a held punch,
+/// 0 MPa in contact, exit 0). Only the plate edge's own tractions count: `plate_force` sums
+/// every load on body 1, and a side load on a held punch does load the contact (red team 14).
+pub fn fixed_plate_load_warning(problem: &Problem, _contact: &CondensedContact) -> Option<String> {
+    let plate = problem
+        .spec
+        .plate
+        .as_ref()
+        .filter(|p| p.motion == "fixed")?;
+    let body = problem
+        .body_index(&problem.spec.contact.as_ref()?.body)
+        .ok()?;
+    let on_plate: Vec<_> = problem
+        .tractions(body)
+        .ok()?
+        .into_iter()
+        .filter(|t| t.edge == plate.edge && (t.normal != [0.0; 2] || t.shear != [0.0; 2]))
+        .collect();
+    if on_plate.is_empty() {
+        return None;
+    }
+    let mesh = problem.mesh(body).ok()?;
+    let edges = problem
+        .named_edge(&mesh, body, &plate.edge, "plate.edge")
+        .ok()?;
+    let thickness = problem.analysis.thickness();
+    let p = problem.spec.analysis.p;
+    let [fx, fz] = on_plate.iter().fold([0.0; 2], |sum, t| {
+        let (f, _) = t.resultant(&mesh, edges, p, thickness, [0.0; 2]);
+        [sum[0] + f[0], sum[1] + f[1]]
+    });
+    Some(format!(
+        "warning: {}: plate.motion = \"fixed\": the tractions on the plate edge \"{}\" (resultant [{fx:.4e}, {fz:.4e}] N) are carried by the fixed plate and do not load the contact; only a negative initial gap and tractions on body 1's other edges press a fixed plate's body onto body 2. To press it with these loads, let the plate move (plate.motion = \"vertical\" or \"vertical_rotation\")",
+        problem.file, plate.edge
+    ))
+}
+
+/// The length (mm, along the contact points) from the first to the last point that carries
+/// pressure in any of `pressures`; 0 without contact.
+fn zone_length(x: &[crate::geometry::Point], pressures: &[&[f64]]) -> f64 {
+    let touching = |i: usize| pressures.iter().any(|p| p.get(i).is_some_and(|&v| v > 0.0));
+    let (Some(first), Some(last)) = (
+        (0..x.len()).find(|&i| touching(i)),
+        (0..x.len()).rfind(|&i| touching(i)),
+    ) else {
+        return 0.0;
+    };
+    x[first..=last].windows(2).map(|w| dist(w[0], w[1])).sum()
 }
 
 /// The edge ends in contact in a steady state (either half cycle).
@@ -223,7 +298,11 @@ pub fn penalty_warning(problem: &Problem, contact: &CondensedContact) -> Option<
 pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<String> {
     let h = &run.history;
     let mut warnings: Vec<String> = penalty_warning(problem, &run.contact).into_iter().collect();
-    warnings.extend(model_warnings(problem, &run.contact));
+    warnings.extend(model_warnings(
+        problem,
+        &run.contact,
+        &[&h.p_plus, &h.p_minus],
+    ));
     warnings.extend(super::validity::run_checks(problem, run));
     warnings.extend(zone_warnings(
         problem,
@@ -257,7 +336,7 @@ pub fn study_steady_warnings(
     contact: &CondensedContact,
     state: &crate::steady::SteadyState,
 ) -> Vec<String> {
-    let mut warnings = model_warnings(problem, contact);
+    let mut warnings = model_warnings(problem, contact, &[&state.p_plus, &state.p_minus]);
     warnings.extend(super::validity::steady_checks(problem, contact, state));
     warnings.extend(zone_warnings(
         problem,
