@@ -94,20 +94,44 @@ def test_bad_variant_raises_before_solving(punch):
         ("contact.target_edge", ["surface", "nowhere"]),
     ],
 )
-@pytest.mark.parametrize("parallel", [False, True])
-def test_a_bad_setting_raises_before_any_variant_is_solved(punch, monkeypatch, key, values, parallel):
+def test_a_bad_setting_raises_before_any_variant_is_solved(punch, monkeypatch, key, values):
     # These values make a well-formed file that only the contact, plate or wear stage refuses;
-    # the study must refuse it before it solves the good variant in front of it.
+    # a serial study must refuse it before it solves the good variant in front of it.
     from wearfem import _study
 
     solved = []
     monkeypatch.setattr(_study, "solve_variant", lambda p, job="steady": solved.append(p))
-    monkeypatch.setattr(_study, "solve_variants", lambda ps, job="steady": [solved.append(p) for p in ps])
-    with concurrent.futures.ThreadPoolExecutor(2) as pool:
-        with pytest.raises(wearfem.WearfemError) as e:
-            wearfem.study(punch, {key: values}, executor=pool if parallel else None)
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.study(punch, {key: values})
     assert e.value.key == key
     assert solved == []
+
+
+def test_a_parallel_study_with_a_bad_variant_names_the_first_and_cancels_its_tasks(punch, monkeypatch):
+    # A parallel study submits each task as soon as its variants are built, in a shuffled
+    # order: the error must still name the first bad variant in grid order (friction -1 at the
+    # start, not -2 further on, which the present order builds first, after one task has been
+    # submitted), and every task submitted before must be cancelled.
+    from wearfem import _study
+
+    class Recording(concurrent.futures.Executor):
+        def __init__(self):
+            self.futures = []
+
+        def submit(self, fn, *args):
+            future = concurrent.futures.Future()  # never run: pending, so cancel() succeeds
+            self.futures.append(future)
+            return future
+
+    frictions = [0.1 + 0.002 * i for i in range(40)]
+    frictions[0], frictions[30] = -1.0, -2.0
+    monkeypatch.setattr(_study, "_workers", lambda executor: 2)
+    executor = Recording()
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.study(punch, {"contact.friction": frictions}, executor=executor)
+    assert e.value.key == "contact.friction"
+    assert "-1" in str(e.value) and "-2" not in str(e.value), str(e.value)
+    assert executor.futures and all(f.cancelled() for f in executor.futures)
 
 
 def test_thread_pool_equals_serial(punch):

@@ -111,9 +111,12 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
     (on 2 Dask workers, 64 variants of punch-b40 ran 1.3 times the serial rate one per task
     and 1.6 times in chunks of 8, docs/performance.md) and the workers still end together.
 
-    Every variant is validated here before any is solved: a bad key or value raises
-    :class:`wearfem.WearfemError` naming it. A variant that does not converge is a row with
-    its ``status``, ``converged = False`` and NaN for every value.
+    Every variant is validated (``wearfem sweep``'s checks): a bad key or value raises
+    :class:`wearfem.WearfemError` naming the first bad variant in grid order, and the study
+    returns nothing. With an executor the variants are built while the first tasks solve, and
+    on an error the tasks already submitted are cancelled (at most the time it took to build
+    the variants is spent on them). A variant that does not converge is a row with its
+    ``status``, ``converged = False`` and NaN for every value.
 
     Returns a pandas DataFrame (one row per variant, in grid order) when pandas is installed,
     else a dict of numpy arrays with the same columns: the override keys, then the columns of
@@ -123,18 +126,19 @@ def study(problem, grid: Grid, executor=None, job: str = "steady", chunksize=Non
     """
     if job not in ("steady", "run"):
         raise ValueError(f'job must be "steady" or "run", got {job!r}')
+    if executor is not None and chunksize is not None:
+        if not (isinstance(chunksize, int) and chunksize >= 1):
+            raise ValueError(f"chunksize must be a positive integer, got {chunksize!r}")
     sets = variants(grid)
-    problems = _build(problem, sets, job, parallel=executor is not None)
-    if isinstance(grid, Mapping) and problems:
-        # As `wearfem sweep`: an axis the job does not read gives equal rows, said once here.
-        _warn_all(_study_warnings([p._inner for p in problems], job, len(sets[0])))
     if executor is None:
+        problems = _build(problem, sets, job)
+        _warn_axes(grid, sets, problems, job)
         rows = [solve_variant(p, job) for p in problems]
     else:
-        if chunksize is not None and not (isinstance(chunksize, int) and chunksize >= 1):
-            raise ValueError(f"chunksize must be a positive integer, got {chunksize!r}")
-        sizes = _chunk_sizes(len(problems), _workers(executor), chunksize)
-        rows = _solve_chunks(executor, problems, job, sizes)
+        sizes = _chunk_sizes(len(sets), _workers(executor), chunksize)
+        problems, futures = _submit_chunks(executor, problem, sets, job, sizes)
+        _warn_axes(grid, sets, problems, job)
+        rows = _collect(futures, len(sets))
     warned = [s for s, r in zip(sets, rows) if r.get("warnings")]
     if warned:
         # One line for the study; each variant's lines are in its `warnings` cell.
@@ -173,48 +177,63 @@ def _chunk_sizes(count: int, workers: int, chunksize=None) -> List[int]:
     return sizes
 
 
-def _solve_chunks(executor, problems: list, job: str, sizes: List[int]) -> List[Dict[str, Any]]:
-    """The rows of every variant in grid order, solved in tasks of ``sizes`` variants.
+def _warn_axes(grid: Grid, sets, problems, job: str) -> None:
+    if isinstance(grid, Mapping) and problems:
+        # As `wearfem sweep`: an axis the job does not read gives equal rows, said once here.
+        _warn_all(_study_warnings([p._inner for p in problems], job, len(sets[0])))
+
+
+def _checked(problem, overrides: Dict[str, Any], job: str):
+    """One variant built and its settings for ``job`` checked (``wearfem sweep``'s checks)."""
+    variant = problem.with_overrides(overrides)
+    variant._inner._check(job)
+    return variant
+
+
+def _build(problem, sets: List[Dict[str, Any]], job: str) -> list:
+    """Every variant built and checked, in grid order: the first bad one raises."""
+    return [_checked(problem, s, job) for s in sets]
+
+
+def _submit_chunks(executor, problem, sets, job: str, sizes: List[int]):
+    """Every variant built and checked, each task submitted as soon as its variants are:
+    the workers start on the first task while the client builds the rest (building and
+    checking is about 1 ms per variant of punch-b40, 5 % of its solve; on 2 Dask workers the
+    second one waited 30-60 ms for all 64 to be built, docs/performance.md). On a bad
+    variant the submitted tasks are cancelled and the first bad one in grid order raises.
 
     The variants go to the tasks in a fixed shuffled order, not as neighbours: a variant's cost
     follows the grid's axes (friction changes the contact iterations), so a task of
     neighbours could hold the costliest row of the grid. The order changes no result (each
     variant is solved on its own), and it is the same on every run."""
-    order = list(range(len(problems)))
-    random.Random(len(problems)).shuffle(order)
-    chunks, start = [], 0
+    order = list(range(len(sets)))
+    random.Random(len(sets)).shuffle(order)
+    problems: list = [None] * len(sets)
+    futures: list = []
+    start = 0
     for size in sizes:
-        chunks.append(order[start : start + size])
+        chunk = order[start : start + size]
         start += size
-    futures = [executor.submit(solve_variants, [problems[i] for i in c], job) for c in chunks]
-    rows: List[Dict[str, Any]] = [{}] * len(problems)
-    for chunk, future in zip(chunks, futures):
+        try:
+            for i in chunk:
+                problems[i] = _checked(problem, sets[i], job)
+        except Exception:
+            for _, future in futures:
+                future.cancel()
+            # The first bad variant in grid order, as a serial study names it.
+            _build(problem, sets, job)
+            raise
+        futures.append((chunk, executor.submit(solve_variants, [problems[i] for i in chunk], job)))
+    return problems, futures
+
+
+def _collect(futures, count: int) -> List[Dict[str, Any]]:
+    """The rows of every variant in grid order from the tasks' results."""
+    rows: List[Dict[str, Any]] = [{}] * count
+    for chunk, future in futures:
         for i, row in zip(chunk, future.result()):
             rows[i] = row
     return rows
-
-
-def _build(problem, sets: List[Dict[str, Any]], job: str, parallel: bool) -> list:
-    """Every variant built and its settings for ``job`` checked (``wearfem sweep``'s checks),
-    in order, before any is solved: the first bad one (in grid order) raises. For a parallel
-    study they are built on this machine's cores (building releases the GIL), since the
-    executor's workers wait for them: on 2 cores, 64 variants of punch-b40 took 45 ms one by
-    one and 27 ms on two threads, of a 0.7 s study (docs/performance.md)."""
-
-    def checked(overrides):
-        variant = problem.with_overrides(overrides)
-        variant._inner._check(job)
-        return variant
-
-    if not parallel or len(sets) < 2:
-        return [checked(s) for s in sets]
-    import os
-    from concurrent.futures import ThreadPoolExecutor
-
-    threads = min(len(sets), os.cpu_count() or 1, 8)
-    with ThreadPoolExecutor(threads) as pool:
-        # map() returns in order and raises the first failure in grid order on iteration.
-        return list(pool.map(checked, sets))
 
 
 def _table(sets: List[Dict[str, Any]], rows: List[Dict[str, Any]], problems: list):
