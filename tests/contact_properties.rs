@@ -1,7 +1,8 @@
 //! Property tests of the contact solve on Example 1 (punch-b40): for random worn shapes the
 //! solution must satisfy the complementarity conditions and the plate equilibrium it claims,
 //! the warm-started active-set method must agree with Lemke's method from scratch, and the
-//! pressures must not depend on the history of earlier solves.
+//! pressures must not depend on the history of earlier solves. Cases the properties found
+//! are kept as fixed tests at the end (and in `contact_properties.proptest-regressions`).
 
 use proptest::prelude::*;
 use std::sync::OnceLock;
@@ -103,4 +104,40 @@ proptest! {
             prop_assert!((x - y).abs() < 1e-10 * peak);
         }
     }
+}
+
+/// Found by CI on 2026-11-24: two separate contact patches under '−' sliding. Lemke's path
+/// reached the solution (z₀ at 3e-14 of its start) on pivot 34, did not let z₀ leave since
+/// its ratio was not within round-off of the smallest, and went on to a secondary ray after
+/// 63 pivots. Lemke's method is the active set's fallback, so this is a solve that would
+/// have been reported as failed although it has a solution.
+#[test]
+fn lemke_stops_where_the_path_reaches_the_solution() {
+    let contact = contact();
+    let coefficients = [
+        -0.5091722310644814,
+        -0.5044690544564343,
+        -0.46569135519606025,
+        0.22994166239730013,
+    ];
+    let gap = shape(contact, &coefficients, 0.0);
+    let (exact, info) =
+        ContactSolver::new(contact, Method::ActiveSet).solve(&gap, Direction::Minus);
+    assert_eq!(info.status, Status::Solved);
+    let (lemke, lemke_info) =
+        ContactSolver::new(contact, Method::Lemke).solve(&gap, Direction::Minus);
+    assert_eq!(lemke_info.status, Status::Solved, "{lemke_info:?}");
+    // Both are checked against the complementarity residual 1e-10 by the solver itself;
+    // two solutions of one LCP with a unique solution agree to that round-off.
+    let peak = exact.pressure.iter().cloned().fold(0.0, f64::max);
+    for (a, b) in exact.pressure.iter().zip(&lemke.pressure) {
+        assert!((a - b).abs() < 1e-8 * peak, "{a} vs {b}");
+    }
+    // Two patches: the case is the one CI drew, not a single-zone one.
+    let patches = exact
+        .pressure
+        .windows(2)
+        .filter(|w| w[0] == 0.0 && w[1] > 0.0)
+        .count();
+    assert_eq!(patches, 2);
 }

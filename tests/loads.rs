@@ -61,6 +61,22 @@ fn half_chord(radius: f64, offset: f64) -> f64 {
     (radius * radius - offset * offset).sqrt()
 }
 
+/// The resultant `force` (N) is `expected` along axis `along` (0: x, 1: z) and zero across,
+/// to 1e-9 of the load: Gauss quadrature on each piece of an exact arc is round-off.
+fn assert_resultant(force: [f64; 2], expected: f64, along: usize, case: &str) {
+    let tolerance = 1e-9 * expected.abs();
+    assert!(
+        (force[along] - expected).abs() < tolerance,
+        "{case}: {} N, exact {expected} N",
+        force[along]
+    );
+    assert!(
+        force[1 - along].abs() < tolerance,
+        "{case}: {} N across",
+        force[1 - along]
+    );
+}
+
 #[test]
 fn a_z_window_over_a_crown_loads_the_arc_inside_it_whatever_the_mesh() {
     let radius = 30.0f64.hypot(90.0);
@@ -73,14 +89,12 @@ fn a_z_window_over_a_crown_loads_the_arc_inside_it_whatever_the_mesh() {
         for u in [1, 2, 3, 4, 5] {
             let window = format!("{{ z = [{lo}, {hi}] }}");
             let force = resultant(&block(u, 2, "crown", &window), "crown");
-            // Gauss quadrature on each piece of an exact arc: round-off, 1e-9 of the load.
-            let tolerance = 1e-9 * expected.abs();
-            assert!(
-                (force[1] - expected).abs() < tolerance,
-                "window [{lo}, {hi}], u = {u}: F_z = {} N, exact {expected} N",
-                force[1]
+            assert_resultant(
+                force,
+                expected,
+                1,
+                &format!("window [{lo}, {hi}], u = {u}: F_z"),
             );
-            assert!(force[0].abs() < tolerance, "u = {u}: F_x = {} N", force[0]);
         }
     }
 }
@@ -97,13 +111,12 @@ fn an_x_window_over_a_bulge_loads_both_pieces() {
         for v in [1, 2, 3, 5] {
             let window = format!("{{ x = [{lo}, {hi}] }}");
             let force = resultant(&block(2, v, "bulge", &window), "bulge");
-            let tolerance = 1e-9 * expected.abs();
-            assert!(
-                (force[0] - expected).abs() < tolerance,
-                "window [{lo}, {hi}], v = {v}: F_x = {} N, exact {expected} N",
-                force[0]
+            assert_resultant(
+                force,
+                expected,
+                0,
+                &format!("window [{lo}, {hi}], v = {v}: F_x"),
             );
-            assert!(force[1].abs() < tolerance, "v = {v}: F_z = {} N", force[1]);
         }
     }
 }
@@ -156,12 +169,6 @@ window = {{ x = [42.0, 48.0] }}
         // The pressure pushes into the body, −x on the right side, over the two pieces'
         // extent in z.
         let expected = -PRESSURE * THICKNESS * 2.0 * (half_height(42.0) - half_height(48.0));
-        let tolerance = 1e-9 * expected.abs();
-        assert!(
-            (force[0] - expected).abs() < tolerance,
-            "v = {v}: F_x = {} N, exact {expected} N",
-            force[0]
-        );
-        assert!(force[1].abs() < tolerance, "v = {v}: F_z = {} N", force[1]);
+        assert_resultant(force, expected, 0, &format!("v = {v}: F_x"));
     }
 }

@@ -198,7 +198,7 @@ fn ratio_test(binv: &[f64], b: &[f64], col: &[f64], basis: &[Var]) -> Option<usi
     // z₀ (of order 1 at the start, q being normalised) would be left at round-off by this
     // step: it leaves now. Otherwise the path passes the solution with z₀ at 1e-14 and may
     // go on to a secondary ray: a frictional punch-b40 case did, after 63 pivots, with z₀
-    // at 3e-14 on pivot 34 (tests/contact_regressions.rs). The z this gives is polished
+    // at 3e-14 on pivot 34 (tests/contact_properties.rs). The z this gives is polished
     // and its residuals are checked by the caller.
     if let Some(r0) = (0..n).find(|&i| basis[i] == Var::Z0) {
         if col[r0] > tol && min.is_finite() && b[r0] - col[r0] * min <= 1e-12 {
