@@ -458,7 +458,7 @@ pub fn steady_by(
     .map_err(|e| {
         use crate::paper_steady::MethodError;
         let key = match e {
-            MethodError::ContactFailed(_) => {
+            MethodError::ContactFailed(_) | MethodError::LiftOff { .. } => {
                 return JobError::Compute(format!("{}: {e}; nothing was written", problem.file))
             }
             MethodError::Steady(crate::steady::SteadyError::NoWear)
