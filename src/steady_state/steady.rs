@@ -22,7 +22,6 @@ use crate::dense::DenseLu;
 
 mod continuation;
 mod step;
-use continuation::continuation;
 use step::{Jacobian, Workspace};
 
 /// Settings of the steady-state solve.
@@ -429,62 +428,134 @@ pub fn steady_state_near(
         SteadySliding::Reciprocating => vec![1.0, -1.0],
         SteadySliding::Monotonic(direction) => vec![direction.sign()],
     };
-    let area = contact.areas();
-    let total_area: f64 = area.iter().sum();
-    let mean = contact.plate_load.first().copied().unwrap_or(0.0).abs() / total_area;
-    let system = System {
-        n,
-        m,
-        halves: signs.len(),
-        area,
-        gap: signs.iter().map(|&s| contact.gap_matrix(s)).collect(),
-        equilibrium: signs
-            .iter()
-            .map(|&s| contact.equilibrium_matrix(s))
-            .collect(),
-        rigid: contact.rigid_gap_matrix(),
-        load: &contact.plate_load,
-        reference_pressure: if mean > 0.0 && mean.is_finite() {
-            mean
-        } else {
-            1.0
-        },
-    };
-    // Start from uniform pressure F/A in both halves (the monotonic optimum of a flat punch).
-    let mut z = vec![0.0; system.size()];
+    let system = System::new(contact, &signs, 1.0);
+    // Start from uniform pressure F/A in both halves (the monotonic optimum of a flat punch),
+    // every point in contact.
+    let mut start = (vec![0.0; system.size()], vec![vec![true; n]; system.halves]);
+    let mean =
+        contact.plate_load.first().copied().unwrap_or(0.0).abs() / system.area.iter().sum::<f64>();
     for h in 0..system.halves {
         for i in 0..n {
-            z[system.force(h, i)] = mean * system.area[i];
+            start.0[system.force(h, i)] = mean * system.area[i];
         }
     }
-    let mut active = vec![vec![true; n]; system.halves];
-    let start = (z.clone(), active.clone());
-    let mut warm_iterations = 0;
+    let mut used = 0;
     if let Some(near) = near.filter(|p| p.len() == system.halves && p.iter().all(|q| q.len() == n))
     {
-        let (mut warm_z, mut warm_active) = (z.clone(), active.clone());
-        for (h, pressure) in near.iter().enumerate() {
-            for (i, &p) in pressure.iter().enumerate() {
-                warm_active[h][i] = p > 0.0;
-                warm_z[system.force(h, i)] = p.max(0.0) * system.area[i];
-            }
-        }
-        let (status, iterations) = system.newton(terms, &mut warm_z, &mut warm_active, settings);
+        let (mut z, mut active) = system.start(near);
+        let (status, iterations) = system.newton(terms, &mut z, &mut active, settings);
         if status == SteadyStatus::Solved {
-            return Ok(system.state(sliding, terms, &warm_z, status, iterations));
+            return Ok(system.state(sliding, terms, &z, status, iterations));
         }
-        warm_iterations = iterations;
+        used = iterations;
     }
-    let (mut status, mut iterations) = system.newton(terms, &mut z, &mut active, settings);
-    iterations += warm_iterations;
+    let (mut z, mut active) = start.clone();
+    let (mut status, iterations) = system.newton(terms, &mut z, &mut active, settings);
+    used += iterations;
     if status != SteadyStatus::Solved && terms.iter().any(|t| t.1 != 1.0) {
         // Far from b = 1 the full Newton step from a uniform pressure can wander between
         // active sets; walk there from the linear problem instead.
-        (z, active) = start;
-        let (retry, used) = continuation(&system, terms, &mut z, &mut active, settings);
-        (status, iterations) = (retry, iterations + used);
+        (z, active) = start.clone();
+        let (retry, iterations) =
+            continuation::in_exponents(&system, terms, &mut z, &mut active, settings);
+        (status, used) = (retry, used + iterations);
     }
-    Ok(system.state(sliding, terms, &z, status, iterations))
+    if status != SteadyStatus::Solved {
+        // A load near one end leaves a steady zone a fraction of the edge long, and the
+        // active sets from a uniform start cycle (red team 17: frictionless, zones under
+        // 3/8 of the punch). The unworn contact's pressures are on the right side, and then
+        // friction is walked to from none.
+        // The frictionless contact's pressures: the start of the frictionless stage.
+        let frictionless = (contact.friction != 0.0).then(|| {
+            let mut frictionless = contact.clone();
+            frictionless.friction = 0.0;
+            frictionless
+        });
+        if let Some(start_pressures) =
+            unworn_pressures(frictionless.as_ref().unwrap_or(contact), &signs)
+        {
+            let (mut retry_z, mut retry_active) = system.start(&start_pressures);
+            let (retry, iterations) = if contact.friction == 0.0 {
+                system.newton(terms, &mut retry_z, &mut retry_active, settings)
+            } else {
+                continuation::in_friction(
+                    contact,
+                    &signs,
+                    terms,
+                    &mut retry_z,
+                    &mut retry_active,
+                    settings,
+                )
+            };
+            used += iterations;
+            if retry == SteadyStatus::Solved {
+                (z, status) = (retry_z, retry);
+            }
+        }
+    }
+    Ok(system.state(sliding, terms, &z, status, used))
+}
+
+/// The pressures (MPa) of the contact solves on the unworn shape, one per half cycle; None if
+/// one of them fails.
+fn unworn_pressures(contact: &CondensedContact, signs: &[f64]) -> Option<Vec<Vec<f64>>> {
+    use crate::complementarity::{ContactSolver, Method, Status};
+    let mut solver = ContactSolver::new(contact, Method::ActiveSet);
+    signs
+        .iter()
+        .map(|&s| {
+            let direction = if s > 0.0 {
+                Direction::Plus
+            } else {
+                Direction::Minus
+            };
+            let (solution, info) = solver.solve(&contact.points.initial_gap, direction);
+            (info.status == Status::Solved).then_some(solution.pressure)
+        })
+        .collect()
+}
+
+impl<'a> System<'a> {
+    /// The system of `contact` for the half cycles of `signs`, with the friction coefficient
+    /// scaled by `friction_scale` (1: the problem's own).
+    fn new(contact: &'a CondensedContact, signs: &[f64], friction_scale: f64) -> System<'a> {
+        let area = contact.areas();
+        let total_area: f64 = area.iter().sum();
+        let mean = contact.plate_load.first().copied().unwrap_or(0.0).abs() / total_area;
+        // Friction enters the matrices as s μ: scaling s scales μ.
+        let scaled: Vec<f64> = signs.iter().map(|s| s * friction_scale).collect();
+        System {
+            n: contact.len(),
+            m: contact.rigid_modes.len(),
+            halves: signs.len(),
+            area,
+            gap: scaled.iter().map(|&s| contact.gap_matrix(s)).collect(),
+            equilibrium: scaled
+                .iter()
+                .map(|&s| contact.equilibrium_matrix(s))
+                .collect(),
+            rigid: contact.rigid_gap_matrix(),
+            load: &contact.plate_load,
+            reference_pressure: if mean > 0.0 && mean.is_finite() {
+                mean
+            } else {
+                1.0
+            },
+        }
+    }
+
+    /// The iterate and active sets of `pressures` (MPa, one profile per half cycle).
+    fn start<P: AsRef<[f64]>>(&self, pressures: &[P]) -> (Vec<f64>, Vec<Vec<bool>>) {
+        let mut z = vec![0.0; self.size()];
+        let mut active = vec![vec![true; self.n]; self.halves];
+        for (h, pressure) in pressures.iter().enumerate() {
+            for (i, &p) in pressure.as_ref().iter().enumerate() {
+                active[h][i] = p > 0.0;
+                z[self.force(h, i)] = p.max(0.0) * self.area[i];
+            }
+        }
+        (z, active)
+    }
 }
 
 impl System<'_> {
