@@ -311,7 +311,7 @@ pub(crate) fn steady_by(
     }
     let last = outcome.history.last();
     println!(
-        "{}: steady state by the {} method: {} iterations, {} contact solves, {:.4} s (+{:.4} s set-up); eq. 49 residual {:.2e}, max δw {:.2e} mm; pressures {} of the peak from the exact steady state → {}",
+        "{}: steady state by the {} method: {} iterations, {} contact solves, {:.4} s (+{:.4} s set-up); eq. 49 residual {:.2e}, max δw {:.2e} mm; {} → {}",
         p.file,
         method.name(),
         outcome.state.iterations,
@@ -322,7 +322,10 @@ pub(crate) fn steady_by(
         last.map_or(f64::NAN, |r| r.max_delta_w),
         outcome
             .distance_from_exact
-            .map_or("(not computed)".to_string(), |d| format!("{:.2} %", 100.0 * d)),
+            .map_or(
+                "no exact steady state to compare the pressures with".to_string(),
+                |d| format!("pressures {:.2} % of the peak from the exact steady state", 100.0 * d)
+            ),
         out.display()
     );
     Ok(())

@@ -5,11 +5,14 @@
 //! The primary method is a primal–dual active-set (semismooth Newton) iteration warm-started
 //! from the last active set of the same sliding direction; when the set does not change the
 //! factorisation of the reduced system is reused and a solve is two triangular sweeps. If the
-//! iteration cycles or the reduced system is singular, Lemke's method takes over. Lemke's
-//! method always terminates; without friction (E = Rᵀ, A symmetric positive definite) it is
-//! guaranteed to end at the solution. With friction A is not symmetric and the guarantee holds
-//! only while friction is small enough for A to stay positive definite (μ below a bound set by
-//! the elastic constants; the paper's μ = 0.3 is well inside it). Whatever method ends, the
+//! iteration cycles or the reduced system is singular, Lemke's method takes over. In exact
+//! arithmetic Lemke's method ends at the solution without friction (E = Rᵀ, A symmetric
+//! positive definite: M is copositive-plus), and with friction while A stays positive definite
+//! and the moment row allows it. In floating point, with the plate's free motions split into
+//! λ⁺ − λ⁻ (two equal and opposite columns), it does not always: on random worn shapes under
+//! a rotating plate it ended on a ray or ran out of pivots in 0.8 % of solvable cases, also
+//! without friction (red team 16, docs/validation.md), while the active set failed on none
+//! of 112 000 and fell back to Lemke in 2 %. Whatever method ends, the
 //! residuals are checked and a solve that does not meet [`ACCEPTED_RESIDUAL`] is reported as
 //! [`Status::Failed`] with its last iterate. The paper's penalty method is the same LCP with
 //! the compliance 1/(c_n w_i t) added to the diagonal: the penetration is then −p/c_n instead

@@ -52,7 +52,10 @@ enum Var {
     Z0,
 }
 
-/// Solve LCP(q, M); `m` is row-major n×n. `max_pivots` bounds the work (a sensible caller value: 50·n).
+/// Solve LCP(q, M); `m` is row-major n×n. `Ok` means the pivoting ended with z₀ out of the
+/// basis, not that the result is accurate: on an ill-conditioned tableau it may not be, so a
+/// caller checks [`complementarity_residual`] of `z` and `w` (the contact solver does).
+/// `max_pivots` bounds the work (a sensible caller value: 50·n).
 pub fn lemke(m: &[f64], q: &[f64], max_pivots: usize) -> Result<LcpSolution, LemkeError> {
     let n = q.len();
     if m.len() != n * n {
