@@ -8,11 +8,11 @@
 //! iteration cycles or the reduced system is singular, Lemke's method takes over. In exact
 //! arithmetic Lemke's method ends at the solution without friction (E = Rᵀ, A symmetric
 //! positive definite: M is copositive-plus), and with friction while A stays positive definite
-//! and the moment row allows it. In floating point, with the plate's free motions split into
-//! λ⁺ − λ⁻ (two equal and opposite columns), it does not always: on random worn shapes under
-//! a rotating plate it ended on a ray or ran out of pivots in 0.8 % of solvable cases, also
-//! without friction (red team 16, docs/validation.md), while the active set failed on none
-//! of 112 000 and fell back to Lemke in 2 %. Whatever method ends, the
+//! and the moment row allows it. In floating point it does not always: the plate's motions
+//! are split into λ⁺ − λ⁻ (two opposite columns) and are scaled to A's size in the tableau
+//! (`lemke_solve`); on random worn shapes under a rotating plate it then still failed in 53
+//! of 112 000 solvable cases (919 unscaled), while the active set failed on none and fell
+//! back to Lemke in 2 % (red team 16, docs/validation.md). Whatever method ends, the
 //! residuals are checked and a solve that does not meet [`ACCEPTED_RESIDUAL`] is reported as
 //! [`Status::Failed`] with its last iterate. The paper's penalty method is the same LCP with
 //! the compliance 1/(c_n w_i t) added to the diagonal: the penetration is then −p/c_n instead

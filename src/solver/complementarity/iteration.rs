@@ -103,35 +103,52 @@ impl ContactSolver {
         info: &mut SolveInfo,
     ) {
         // z = (P, λ⁺, λ⁻); M = [[A, R, −R], [−E, 0, 0], [E, 0, 0]], q = [g, −L, L]: with E = Rᵀ
-        // (no friction) M is positive semi-definite, so Lemke's method finds the solution.
+        // (no friction) M is positive semi-definite, so Lemke's method finds the solution in
+        // exact arithmetic. The plate's motions are scaled, λ_k = s_k λ'_k (D M D, D q with
+        // D = diag(1, s, s) keep the complementarity), so that the columns s_k R_k are of
+        // the size of A's: unscaled, R (mm per mm or rad) is 1e6 or more times A (mm per N),
+        // A's entries fell below the pivot tolerances, and the path depended on the units
+        // (red team 16: 0.8 % of solvable shapes failed under a rotating plate, 5 times more
+        // on the model scaled by 7).
         let (n, m) = (self.n, self.m);
         let dir = direction.index();
         let size = n + 2 * m;
+        let a_scale = self.a[dir].iter().fold(0.0f64, |s, v| s.max(v.abs()));
+        let scale: Vec<f64> = (0..m)
+            .map(|k| {
+                let r_scale = (0..n).fold(0.0f64, |s, i| s.max(self.r[i * m + k].abs()));
+                if r_scale > 0.0 && a_scale > 0.0 {
+                    a_scale / r_scale
+                } else {
+                    1.0
+                }
+            })
+            .collect();
         let mut mm = vec![0.0; size * size];
         let mut q = vec![0.0; size];
         for i in 0..n {
             mm[i * size..i * size + n].copy_from_slice(&self.a[dir][i * n..(i + 1) * n]);
             for k in 0..m {
-                mm[i * size + n + k] = self.r[i * m + k];
-                mm[i * size + n + m + k] = -self.r[i * m + k];
+                mm[i * size + n + k] = scale[k] * self.r[i * m + k];
+                mm[i * size + n + m + k] = -scale[k] * self.r[i * m + k];
             }
             q[i] = gap[i];
         }
         for k in 0..m {
             for j in 0..n {
-                mm[(n + k) * size + j] = -self.e[dir][k * n + j];
-                mm[(n + m + k) * size + j] = self.e[dir][k * n + j];
+                mm[(n + k) * size + j] = -scale[k] * self.e[dir][k * n + j];
+                mm[(n + m + k) * size + j] = scale[k] * self.e[dir][k * n + j];
             }
-            q[n + k] = -self.load[k];
-            q[n + m + k] = self.load[k];
+            q[n + k] = -scale[k] * self.load[k];
+            q[n + m + k] = scale[k] * self.load[k];
         }
         match lemke(&mm, &q, 50 * size) {
             Ok(sol) => {
                 info.lemke_pivots = sol.pivots;
                 info.status = Status::Solved;
                 out.force.copy_from_slice(&sol.z[..n]);
-                for k in 0..m {
-                    out.rigid[k] = sol.z[n + k] - sol.z[n + m + k];
+                for (k, s) in scale.iter().enumerate() {
+                    out.rigid[k] = s * (sol.z[n + k] - sol.z[n + m + k]);
                 }
                 for i in 0..n {
                     out.active[i] = out.force[i] > 0.0;
