@@ -615,3 +615,46 @@ fn records_after_an_adaptive_stop_are_listed() {
     );
     let _ = std::fs::remove_dir_all(&out);
 }
+
+#[test]
+fn an_inclined_contact_under_a_vertical_plate_is_named() {
+    // Red team 18: punch-b40 turned by 30° as a whole ran with other physics, silently (its
+    // pressures 13–17 % of the peak from the turned reference, steady p⁺ + p⁻ from 29.1 to
+    // 39.0 MPa instead of a uniform 33.3). Vertical balance of the tilted contact with the
+    // sideways hold: N (cos θ ± μ sin θ) = F cos θ, so the factors are cos 30°/(cos 30° ± 0.25
+    // sin 30°) = 0.874 and 1.169; the shipped examples (flat or symmetric contacts) say nothing.
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/punch-b40-turned-30.toml"
+    );
+    for job in ["contact", "steady"] {
+        let out =
+            std::env::temp_dir().join(format!("wearfem-inclined-{job}-{}", std::process::id()));
+        let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args([job, file, "--out"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        let _ = std::fs::remove_dir_all(&out);
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert!(
+            stderr.contains("inclined by 30.0°")
+                && stderr.contains("0.874 or 1.169 times the load"),
+            "{job}: {stderr}"
+        );
+    }
+    for name in ["punch-a", "punch-b40", "hertz", "pin", "brake"] {
+        let out =
+            std::env::temp_dir().join(format!("wearfem-inclined-{name}-{}", std::process::id()));
+        let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .args(["contact", name, "--out"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        let _ = std::fs::remove_dir_all(&out);
+        assert!(
+            !String::from_utf8_lossy(&result.stderr).contains("inclined"),
+            "{name}"
+        );
+    }
+}

@@ -287,6 +287,7 @@ pub fn contact(
     // solution, so a failed solve gets none.
     let mut warnings: Vec<String> = penalty_warning(problem, &contact).into_iter().collect();
     warnings.extend(fixed_plate_load_warning(problem, &contact));
+    warnings.extend(super::warnings::inclined_contact_warning(problem, &contact));
     if info.status == Status::Solved {
         warnings.extend(super::validity::plate_motion_warning(
             problem,
