@@ -429,16 +429,7 @@ pub fn steady_state_near(
         SteadySliding::Monotonic(direction) => vec![direction.sign()],
     };
     let system = System::new(contact, &signs, 1.0);
-    // Start from uniform pressure F/A in both halves (the monotonic optimum of a flat punch),
-    // every point in contact.
-    let mut start = (vec![0.0; system.size()], vec![vec![true; n]; system.halves]);
-    let mean =
-        contact.plate_load.first().copied().unwrap_or(0.0).abs() / system.area.iter().sum::<f64>();
-    for h in 0..system.halves {
-        for i in 0..n {
-            start.0[system.force(h, i)] = mean * system.area[i];
-        }
-    }
+    let start = system.uniform_start();
     let mut used = 0;
     if let Some(near) = near.filter(|p| p.len() == system.halves && p.iter().all(|q| q.len() == n))
     {
@@ -463,9 +454,9 @@ pub fn steady_state_near(
     if status != SteadyStatus::Solved {
         // A load near one end leaves a steady zone a fraction of the edge long, and the
         // active sets from a uniform start cycle (red team 17: frictionless, zones under
-        // 3/8 of the punch). The unworn contact's pressures are on the right side, and then
-        // friction is walked to from none.
-        // The frictionless contact's pressures: the start of the frictionless stage.
+        // 3/8 of the punch). The unworn frictionless contact's pressures lie on the right
+        // side; with friction, μ is then walked to from none. (The contact is cloned only on
+        // this path of a failed start.)
         let frictionless = (contact.friction != 0.0).then(|| {
             let mut frictionless = contact.clone();
             frictionless.friction = 0.0;
@@ -496,6 +487,11 @@ pub fn steady_state_near(
     Ok(system.state(sliding, terms, &z, status, used))
 }
 
+/// The plate's first load over the contact area (MPa): the mean contact pressure F/A.
+fn mean_pressure(load: &[f64], area: &[f64]) -> f64 {
+    load.first().copied().unwrap_or(0.0).abs() / area.iter().sum::<f64>()
+}
+
 /// The pressures (MPa) of the contact solves on the unworn shape, one per half cycle; None if
 /// one of them fails.
 fn unworn_pressures(contact: &CondensedContact, signs: &[f64]) -> Option<Vec<Vec<f64>>> {
@@ -520,8 +516,7 @@ impl<'a> System<'a> {
     /// scaled by `friction_scale` (1: the problem's own).
     fn new(contact: &'a CondensedContact, signs: &[f64], friction_scale: f64) -> System<'a> {
         let area = contact.areas();
-        let total_area: f64 = area.iter().sum();
-        let mean = contact.plate_load.first().copied().unwrap_or(0.0).abs() / total_area;
+        let mean = mean_pressure(&contact.plate_load, &area);
         // Friction enters the matrices as s μ: scaling s scales μ.
         let scaled: Vec<f64> = signs.iter().map(|s| s * friction_scale).collect();
         System {
@@ -542,6 +537,19 @@ impl<'a> System<'a> {
                 1.0
             },
         }
+    }
+
+    /// Uniform pressure F/A in every half, every point in contact (the monotonic optimum of a
+    /// flat punch): the cold start.
+    fn uniform_start(&self) -> (Vec<f64>, Vec<Vec<bool>>) {
+        let mean = mean_pressure(self.load, &self.area);
+        let mut z = vec![0.0; self.size()];
+        for h in 0..self.halves {
+            for i in 0..self.n {
+                z[self.force(h, i)] = mean * self.area[i];
+            }
+        }
+        (z, vec![vec![true; self.n]; self.halves])
     }
 
     /// The iterate and active sets of `pressures` (MPa, one profile per half cycle).
