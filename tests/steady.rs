@@ -285,26 +285,36 @@ fn steady_state_with_lift_off_is_the_triangle_of_eq_19() {
 
 #[test]
 fn steady_state_with_a_short_zone_is_the_triangle_of_eq_19() {
-    // Red team 17, F2: punch-b40's 16.666 MPa on the first w mm of its top only, without
-    // friction. F0 = 166.66 w N at w/2 from the left end, so the steady p⁺ + p⁻ is the
-    // triangle of base 3w/2, peak 4F0/(t 3w/2), on 22.5 mm (w = 15: 3/8 of the punch) or
-    // less; from the uniform start the active sets cycled ("please report", exit 1) while a
-    // run reaches it. The bases end on mesh lines (1092.5 and 1085 mm): round-off. (w = 5,
-    // a zone of 1/8 of the punch, still fails: docs/validation.md.)
-    for w in [15.0, 10.0] {
+    // Red team 17, F2: punch-b40's 16.666 MPa on the first w mm of its top only. F0 = 166.66 w
+    // N at w/2 from the left end, so the steady p⁺ + p⁻ is the triangle of base 3w/2, peak
+    // 4F0/(t 3w/2), on 22.5 mm (w = 15: 3/8 of the punch) or less. Friction does not change
+    // it: on a flat contact the friction terms of the summed equilibrium cancel (eq. 23a),
+    // whatever the zones of the two half cycles, as long as they overlap (μ ≤ w/80 keeps
+    // each half's resultant on the punch: 40 μ F0 of friction moment about the pin). From
+    // the uniform start the active sets cycled ("please report", exit 1) while a run reaches
+    // it; with friction they cycled even from the run's own last cycle, because a point out
+    // of contact in both halves, whose shape is free, was brought into contact by the other
+    // half's gap (w = 5, 10 with μ = 0.02, 0.05). The bases end on mesh lines (1092.5, 1085
+    // and 1077.5 mm): round-off.
+    for (w, mu) in [
+        (15.0, 0.0),
+        (10.0, 0.0),
+        (5.0, 0.0),
+        (10.0, 0.02),
+        (10.0, 0.05),
+        (5.0, 0.02),
+    ] {
         let window = format!(
             "normal = 16.666\nwindow = {{ x = [1070.0, {}] }}",
             1070.0 + w
         );
+        let friction = format!("friction = {mu}");
         let p = problem(
             "punch-b40",
-            &[
-                ("normal = 16.666", &window),
-                ("friction = 0.25", "friction = 0.0"),
-            ],
+            &[("normal = 16.666", &window), ("friction = 0.25", &friction)],
         );
         let (state, contact, _) = driver::steady(&p).unwrap();
-        assert_eq!(state.status, SteadyStatus::Solved, "w = {w}");
+        assert_eq!(state.status, SteadyStatus::Solved, "w = {w}, mu = {mu}");
         let (base, force) = (1.5 * w, 16.666 * w * 10.0);
         let peak = 4.0 * force / (10.0 * base);
         for (i, x) in contact.points.x.iter().enumerate() {
@@ -312,10 +322,11 @@ fn steady_state_with_a_short_zone_is_the_triangle_of_eq_19() {
             let sum = state.p_plus[i] + state.p_minus[i];
             assert!(
                 (sum - triangle).abs() < 1e-8 * peak,
-                "w = {w}, x = {}: {sum} vs {triangle}",
+                "w = {w}, mu = {mu}, x = {}: {sum} vs {triangle}",
                 x[0]
             );
         }
+        assert_shape_reproduces_pressures(&state, &contact, &format!("w = {w}, mu = {mu}"));
     }
 }
 

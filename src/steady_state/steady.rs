@@ -330,6 +330,16 @@ impl System<'_> {
     fn update_active_sets(&self, z: &mut [f64], active: &mut [Vec<bool>], wear_scale: f64) -> bool {
         let (n, halves) = (self.n, self.halves);
         let mut changed = false;
+        // A point out of contact in every half at the linearisation had no wear row: its shape
+        // is free, and its row set it to graze in the half that was then the closest. After
+        // the step another half may be the closer, with a negative gap there; that calls for
+        // the shape to move (the next linearisation grazes in the new closest half), not for
+        // contact. Only the rigid wear closing its gap (below) brings such a point back. Read
+        // as contact, those gaps of a point far from the zone (the halves' gaps differ there
+        // by the friction's part of the elastic displacement) brought 28 points in at once,
+        // and the active sets cycled with period 6 (frictional short zones, punch-b40 loaded
+        // on [1070, 1080] with mu = 0.02, 0.05: exit 1 where `run` reaches a steady state).
+        let grazing: Vec<bool> = (0..n).map(|i| Self::out_of_contact(active, i)).collect();
         for h in 0..halves {
             let force_scale = (0..n)
                 .map(|i| z[self.force(h, i)].abs())
@@ -338,12 +348,13 @@ impl System<'_> {
                 let p = z[self.force(h, i)];
                 let now = if active[h][i] {
                     p >= -1e-13 * force_scale
+                } else if grazing[i] {
+                    false
                 } else {
-                    // A point out of contact in every half has its shape set so that it just
-                    // grazes (zero gap) in its closest half: that gap is zero up to the
-                    // round-off of its terms, and reading that round-off as contact brought
-                    // every such point in at once (red team 13: with b < 1 the steady
-                    // iteration then cycled, 28 of 73 points in and out, and never converged).
+                    // A point in contact in another half has a wear row that fixes its shape:
+                    // a gap below the round-off of its terms here is contact (red team 13:
+                    // reading that round-off as contact brought every grazing point in at
+                    // once, with b < 1 the iteration then cycled, 28 of 73 points in and out).
                     self.gap_at(z, h, i) * self.gap[h][i * n + i].recip() < -1e-13 * force_scale
                 };
                 changed |= now != active[h][i];
