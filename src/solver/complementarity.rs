@@ -179,7 +179,20 @@ impl ContactSolver {
             Some(k) => self.factors.remove(k),
             None => {
                 self.factors.truncate(KEPT_COMPLIANCES - 1);
-                Factors::new(compliance)
+                let mut fresh = Factors::new(compliance);
+                // The new compliance's first solve starts from the last solve's active set,
+                // not from every point in contact: Newton's method for b ≠ 1 changes the
+                // compliance at every iteration, and from all points in contact on a shape
+                // worn 100 times deeper than the elastic gaps the primal–dual iteration
+                // dropped the zone itself, ended on one point (a singular system) and left
+                // every solve to Lemke's method, which then failed on a ray (a pinned
+                // plate's load near one end, b = 2: the run stopped at the steady state).
+                if let Some(last) = self.factors.first() {
+                    for (cache, previous) in fresh.cache.iter_mut().zip(&last.cache) {
+                        cache.active.clone_from(&previous.active);
+                    }
+                }
+                fresh
             }
         };
         self.factors.insert(0, slot);
