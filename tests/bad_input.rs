@@ -116,6 +116,22 @@ fn non_positive_young_modulus() {
 }
 
 #[test]
+fn underflowing_young_modulus_and_thickness() {
+    // Red team 19: 1e-300 passed the old check (> 0), and `elastic` then wrote a strain
+    // energy of NaN with exit 0; `contact` blamed the supports for the singular matrix.
+    expect_error(
+        &baseline().replace("young = 2.0e5", "young = 1e-300"),
+        "young_tiny",
+        &["materials.steel.young", "1e-6"],
+    );
+    expect_error(
+        &baseline().replace("thickness = 1.0 ", "thickness = 1e-300 "),
+        "thickness_tiny",
+        &["analysis.thickness", "1e-6"],
+    );
+}
+
+#[test]
 fn zero_degree() {
     expect_error(
         &baseline().replace("p = 8", "p = 0"),
@@ -657,4 +673,32 @@ fn an_inclined_contact_under_a_vertical_plate_is_named() {
             "{name}"
         );
     }
+}
+
+#[test]
+fn an_implicit_step_that_misses_its_tolerance_stops_the_run() {
+    // Red team 19: with b != 1 and one Newton iteration a step's wear came from an
+    // unconverged linearisation (error 100 %); the run went on, wrote 20 such steps, the final
+    // profiles and figures, and named no residual. Now it stops at that step, writes nothing
+    // of it and gives the linearisation error.
+    let text = wearfem::examples::example("punch-b40-b1.2").unwrap();
+    let tag = "unconverged_step";
+    let (code, err) = run_cli(
+        "run",
+        &["--steps", "4", "--set", "wear.max_iterations=1"],
+        text,
+        tag,
+    );
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("step 1: the implicit step's iteration did not converge"),
+        "{err}"
+    );
+    assert!(err.contains("linearisation error"), "{err}");
+    let out = std::env::temp_dir()
+        .join(format!("wearfem-bad-{tag}-{}", std::process::id()))
+        .join("out");
+    let history = std::fs::read_to_string(out.join("history.csv")).unwrap();
+    assert_eq!(history.lines().count(), 1, "steps were written: {history}");
+    assert!(!out.join("final.csv").exists());
 }

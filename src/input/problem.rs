@@ -16,6 +16,12 @@ pub use crate::schema::*;
 pub const MAX_COORDINATE: f64 = 1e6;
 /// Largest modulus or traction accepted, MPa: 1000 times diamond's Young's modulus.
 pub const MAX_STRESS: f64 = 1e9;
+/// Smallest Young's modulus accepted, MPa: 1 Pa, softer than the softest hydrogels. Below it
+/// nothing is a solid in mm, N and MPa, and values like 1e-300 made the stiffness underflow:
+/// a strain energy of NaN under exit 0, or a "singular" matrix blamed on the supports.
+pub const MIN_YOUNG: f64 = 1e-6;
+/// Smallest thickness accepted, mm (a nanometre), for the same reason.
+pub const MIN_THICKNESS: f64 = 1e-6;
 
 /// Whether `value` is finite and at most `limit` in size.
 fn within(value: f64, limit: f64) -> bool {
@@ -84,11 +90,11 @@ impl Problem {
             message,
         };
         let a = &spec.analysis;
-        if !(a.thickness > 0.0 && a.thickness <= MAX_COORDINATE) {
+        if !(a.thickness >= MIN_THICKNESS && a.thickness <= MAX_COORDINATE) {
             return Err(err(
                 "analysis.thickness",
                 format!(
-                    "must be a positive length of at most {MAX_COORDINATE:e} mm, got {}",
+                    "must be a length from {MIN_THICKNESS:e} to {MAX_COORDINATE:e} mm, got {:?}",
                     a.thickness
                 ),
             ));
@@ -133,11 +139,11 @@ impl Problem {
         };
         let mut materials = Vec::new();
         for (name, m) in &spec.materials {
-            if !(m.young > 0.0 && m.young <= MAX_STRESS) {
+            if !(m.young >= MIN_YOUNG && m.young <= MAX_STRESS) {
                 return Err(err(
                     &format!("materials.{name}.young"),
                     format!(
-                        "Young's modulus must be positive and at most {MAX_STRESS:e} MPa, got {}",
+                        "Young's modulus must lie from {MIN_YOUNG:e} to {MAX_STRESS:e} MPa, got {:?}",
                         m.young
                     ),
                 ));
@@ -145,7 +151,7 @@ impl Problem {
             if !(m.poisson.is_finite() && m.poisson > -1.0 && m.poisson < 0.5) {
                 return Err(err(
                     &format!("materials.{name}.poisson"),
-                    format!("Poisson's ratio must lie in (-1, 0.5), got {}", m.poisson),
+                    format!("Poisson's ratio must lie in (-1, 0.5), got {:?}", m.poisson),
                 ));
             }
             materials.push(Material {

@@ -73,6 +73,13 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
             }
         }
     }
+    if !energy.is_finite() {
+        // Only an input far outside the accepted ranges reaches here; a result with a strain
+        // energy of NaN is not one.
+        return Err(JobError::Compute(format!(
+            "the elastic solve's strain energy is not finite ({energy}): the displacements overflowed; check the loads against the moduli and the supports (nothing was written)"
+        )));
+    }
     Ok(json!({
         "title": problem.spec.title,
         "wearfem_version": crate::VERSION,

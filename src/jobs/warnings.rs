@@ -337,7 +337,7 @@ pub fn penalty_warning(problem: &Problem, contact: &CondensedContact) -> Option<
         .fold(0.0f64, f64::max);
     (ratio > PENALTY_SOFTNESS_LIMIT).then(|| {
         format!(
-            "warning: {}: contact.penalty: c_n = {stiffness:e} MPa/mm is soft against the bodies (its compliance is {:.3} times theirs at a contact point): the bodies interpenetrate by -p/c_n and the pressures differ from the exact contact's by up to about that share; raise c_n or use method = \"active_set\"",
+            "warning: {}: contact.penalty: c_n = {stiffness:e} MPa/mm is soft against the bodies (its compliance is {:.3e} times theirs at a contact point): the bodies interpenetrate by -p/c_n and the pressures differ from the exact contact's by up to about that share; raise c_n or use method = \"active_set\"",
             problem.file, ratio
         )
     })

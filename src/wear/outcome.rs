@@ -37,6 +37,14 @@ pub enum StopReason {
         /// Equilibrium residual of the failed solve (relative to the load).
         equilibrium: f64,
     },
+    /// The implicit step's Newton iteration (b ≠ 1) did not meet `wear.tolerance` within
+    /// `wear.max_iterations`; nothing of the step was kept.
+    UnconvergedStep {
+        /// Its final linearisation error, percent of the largest wear (as `criterion`).
+        criterion: f64,
+        /// `wear.tolerance`, percent.
+        tolerance: f64,
+    },
     /// The wear stopped being finite (β̃ or the load far out of range).
     NonFiniteWear,
     /// The adaptive schedule found the steady state to its tolerance.
@@ -53,6 +61,13 @@ impl std::fmt::Display for StopReason {
                 f,
                 "a contact solve failed (complementarity residual {complementarity:.2e}, equilibrium residual {equilibrium:.2e}; a solve counts as solved below {:.0e})",
                 crate::complementarity::ACCEPTED_RESIDUAL
+            ),
+            StopReason::UnconvergedStep {
+                criterion,
+                tolerance,
+            } => write!(
+                f,
+                "the implicit step's iteration did not converge (linearisation error {criterion:.3e} % of the largest wear after wear.max_iterations iterations, tolerance {tolerance:e} %)"
             ),
             StopReason::NonFiniteWear => write!(f, "the wear stopped being finite"),
             StopReason::SteadyState => write!(f, "the steady state was reached"),

@@ -130,6 +130,22 @@ impl WearIntegrator {
                 shape.copy_from_slice(&ws.last_shape);
                 break;
             }
+            let implicit = self.spec.substeps == 0 && self.spec.scheme != "fixed_point";
+            if implicit && !outcome.converged {
+                // Its pressure and wear are those of an unconverged iteration: not a result.
+                // (The paper's fixed-point scheme keeps such steps, as the paper does, and
+                // counts them.)
+                hist.unconverged_steps += 1;
+                hist.stopped = Some((
+                    step,
+                    StopReason::UnconvergedStep {
+                        criterion: outcome.criterion,
+                        tolerance: self.spec.tolerance,
+                    },
+                ));
+                shape.copy_from_slice(&ws.last_shape);
+                break;
+            }
             if !(shape.iter().all(|g| g.is_finite()) && ws.increment.iter().all(|w| w.is_finite()))
             {
                 // Wear too large for the arithmetic (β̃ or the load far out of range): stop with
