@@ -387,6 +387,28 @@ fn named_field_key(text: &str, line: usize, message: &str) -> Option<String> {
     })
 }
 
+/// The dotted key of a reader error at byte `at` of `text`: the key or value there
+/// ([`located::key_at`]), with the field the message names ("unknown field `foo`", "missing
+/// field `bar`") appended when the place is its table. None where no key or value holds `at`.
+fn error_key(text: &str, at: usize, message: &str) -> Option<String> {
+    let place = located::key_at(text, at)?;
+    let field = ["unknown field `", "missing field `"]
+        .iter()
+        .find_map(|p| message.strip_prefix(p))
+        .and_then(|rest| rest.split('`').next());
+    let Some(field) = field else {
+        return Some(place);
+    };
+    // The reader points at the unknown key itself, or at the header of an unknown array of
+    // tables (`[[bodiez]]`: the place is `bodiez[0]`), or at the table missing the field.
+    let entry = place.trim_end_matches(|c: char| c.is_ascii_digit() || c == '[' || c == ']');
+    Some(if entry == field || entry.ends_with(&format!(".{field}")) {
+        entry.to_string()
+    } else {
+        format!("{place}.{field}")
+    })
+}
+
 /// The table (as `--set` writes it: `bodies[1].blocks[0]`) that the last header among the
 /// first `end` lines opens, counting `[[…]]` entries; "" before any header.
 fn table_above(lines: &[&str], end: usize) -> String {
@@ -438,9 +460,11 @@ pub fn parse_spec(
     let file_error = |e: toml::de::Error| {
         let key = match e.span() {
             Some(span) => {
-                let line = text[..span.start.min(text.len())].matches('\n').count() + 1;
-                let key =
-                    named_field_key(text, line, e.message()).or_else(|| key_on_line(text, line));
+                let start = span.start.min(text.len());
+                let line = text[..start].matches('\n').count() + 1;
+                let key = error_key(text, start, e.message())
+                    .or_else(|| named_field_key(text, line, e.message()))
+                    .or_else(|| key_on_line(text, line));
                 match key {
                     Some(key) => format!("{key} (line {line})"),
                     None => format!("line {line}"),
@@ -455,25 +479,49 @@ pub fn parse_spec(
         }
     };
     // The file is read on its own first, so that its own errors keep their line numbers.
-    let spec: ProblemSpec = toml::from_str(text).map_err(file_error)?;
+    let alone = toml::from_str::<ProblemSpec>(text);
     if overrides.is_empty() {
-        return Ok(spec);
+        return alone.map_err(file_error);
     }
     let mut table: toml::Table = toml::from_str(text).map_err(file_error)?;
-    let mut spec = spec;
+    // A file may lack what its overrides supply (a template completed by `--set`), so a
+    // failed reading is charged to the file until an override changes it, then to that
+    // override: the reading is repeated after each, and the last one must succeed.
+    let mut failure: Option<(Option<&Override>, toml::de::Error)> = alone.err().map(|e| (None, e));
+    let mut spec = None;
     for o in overrides {
-        let error = |message: String| ProblemError {
+        apply(&mut table, o).map_err(|message| ProblemError {
             file: file.into(),
             key: o.key.clone(),
             message,
-        };
-        apply(&mut table, o).map_err(error)?;
-        // Read after each override, so that an error is charged to the override that made it.
-        spec = toml::Value::Table(table.clone())
-            .try_into()
-            .map_err(|e: toml::de::Error| error(one_line(e.message())))?;
+        })?;
+        match toml::Value::Table(table.clone()).try_into::<ProblemSpec>() {
+            Ok(read) => (spec, failure) = (Some(read), None),
+            Err(e) => {
+                let same = failure
+                    .as_ref()
+                    .is_some_and(|(_, f)| f.message() == e.message());
+                if !same {
+                    failure = Some((Some(o), e));
+                }
+                spec = None;
+            }
+        }
     }
-    Ok(spec)
+    match failure {
+        Some((Some(o), e)) => Err(ProblemError {
+            file: file.into(),
+            key: o.key.clone(),
+            message: one_line(e.message()),
+        }),
+        Some((None, e)) => Err(file_error(e)),
+        // Without a failure the last reading succeeded.
+        None => spec.ok_or_else(|| ProblemError {
+            file: file.into(),
+            key: "(file)".into(),
+            message: "could not be read".into(),
+        }),
+    }
 }
 
 /// A problem file's text with `overrides` applied, as TOML text (for `Problem.to_toml` in
@@ -537,5 +585,6 @@ pub fn value_at(
     Ok(here.cloned())
 }
 
+mod located;
 #[cfg(test)]
 mod tests;

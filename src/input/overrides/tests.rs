@@ -208,3 +208,19 @@ fn no_overrides_reads_the_file_unchanged() {
     let spec = with(&[]).unwrap();
     assert_eq!(spec.plate.unwrap().pin, Some([1100.0, 140.0]));
 }
+
+#[test]
+fn overrides_may_supply_what_the_file_lacks() {
+    // Red team 19: a file without analysis.p, completed by `--set analysis.p=8`, was refused
+    // ("missing field `p`") because the file was read alone first.
+    let text = punch().replace("p = 8\n", "");
+    let set = |s: &str| Override::parse(s).unwrap();
+    let spec = parse_spec(&text, "t.toml", &[set("analysis.p=8")]).unwrap();
+    assert_eq!(spec.analysis.p, 8);
+    // An override that does not supply it leaves the file's own error, with its line.
+    let e = parse_spec(&text, "t.toml", &[set("contact.friction=0.3")]).unwrap_err();
+    assert!(e.key.starts_with("analysis.p (line "), "{}", e.key);
+    // One that supplies it wrongly is named.
+    let e = parse_spec(&text, "t.toml", &[set("analysis.p=x")]).unwrap_err();
+    assert_eq!(e.key, "analysis.p");
+}
