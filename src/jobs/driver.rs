@@ -466,7 +466,7 @@ pub fn steady_by(
     .map_err(|e| {
         use crate::paper_steady::MethodError;
         let key = match e {
-            MethodError::ContactFailed(_) | MethodError::LiftOff { .. } => {
+            MethodError::ContactFailed { .. } | MethodError::LiftOff { .. } => {
                 return JobError::Compute(format!("{}: {e}; nothing was written", problem.file))
             }
             MethodError::Steady(crate::steady::SteadyError::NoWear)

@@ -159,8 +159,13 @@ pub enum MethodError {
     )]
     Unsupported(String),
     /// A contact solve inside the method failed (at the shape of that iterate).
-    #[error("a contact solve inside the {0} did not converge")]
-    ContactFailed(&'static str),
+    #[error("a contact solve inside the §6 method did not converge (complementarity residual {complementarity:.2e}, equilibrium residual {equilibrium:.2e}; a solve counts as solved below {:.0e})", crate::complementarity::ACCEPTED_RESIDUAL)]
+    ContactFailed {
+        /// Complementarity residual of the failed solve (relative to the peak pressure).
+        complementarity: f64,
+        /// Equilibrium residual of the failed solve (relative to the load).
+        equilibrium: f64,
+    },
     /// The methods' target p_Σ (the summed-pressure theory over every contact point) is
     /// negative somewhere: the steady contact leaves part of the edge (lift-off), which the
     /// methods assume it does not.
@@ -233,7 +238,10 @@ impl<'a> Evaluator<'a> {
             .get_or_insert_with(|| ContactSolver::new(contact, Method::ActiveSet));
         let (sol, info) = solver.solve(&gap, direction);
         if info.status != Status::Solved {
-            return Err(MethodError::ContactFailed("§6 method"));
+            return Err(MethodError::ContactFailed {
+                complementarity: info.complementarity,
+                equilibrium: info.equilibrium,
+            });
         }
         Ok((sol.pressure, sol.rigid))
     }
