@@ -66,7 +66,8 @@ enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
     },
-    /// Integrate wear over the problem's steps; writes summary.json, history.csv, final.csv.
+    /// Integrate wear over the problem's steps; writes summary.json, history.csv, final.csv,
+    /// snapshots.csv and the figures of docs/figures.md (PNG and SVG).
     Run {
         /// Problem file (TOML) or built-in example name (default: punch-b40).
         problem: Option<String>,
@@ -84,7 +85,8 @@ enum Command {
         set: Vec<String>,
     },
     /// Compute the steady worn state directly (no time integration); writes summary.json,
-    /// steady.csv and pressure.svg, shape.svg (and iterations.csv for reciprocating sliding).
+    /// steady.csv and the figures pressure and shape (PNG and SVG); with --method averaged,
+    /// spline or penalty (the paper's §6 methods) also iterations.csv.
     Steady {
         /// Problem file (TOML) or built-in example name.
         problem: String,
@@ -550,9 +552,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
             (Some("show"), Some(n)) => match wearfem::examples::example(&n) {
                 Some(text) => print!("{text}"),
                 None => {
+                    let names: Vec<&str> = EXAMPLES.iter().map(|e| e.0).collect();
                     return Err(Failure::Input(format!(
-                        "{n}: no built-in example of that name"
-                    )))
+                        "{n}: no built-in example of that name (examples: {})",
+                        names.join(", ")
+                    )));
                 }
             },
             _ => return Err(Failure::Input("usage: wearfem examples [show NAME]".into())),

@@ -702,3 +702,17 @@ fn an_implicit_step_that_misses_its_tolerance_stops_the_run() {
     assert_eq!(history.lines().count(), 1, "steps were written: {history}");
     assert!(!out.join("final.csv").exists());
 }
+
+#[test]
+fn unknown_example_to_show_lists_the_examples() {
+    // As for a problem name that is neither a file nor an example: exit 2, the name and the list.
+    let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .args(["examples", "show", "nope"])
+        .output()
+        .unwrap();
+    assert_eq!(result.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    for name in ["nope", "punch-b40", "lame", "pin"] {
+        assert!(stderr.contains(name), "{stderr}");
+    }
+}
