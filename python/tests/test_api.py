@@ -135,6 +135,23 @@ def test_from_dict_equals_text():
     np.testing.assert_array_equal(a.shape, b.shape)
 
 
+def test_from_dict_errors_name_the_key():
+    # Red team 19: a wrong value in a dict named only "line 5" of a text the caller never saw.
+    tomllib = pytest.importorskip("tomllib", reason="tomllib is in the standard library from Python 3.11")
+
+    d = tomllib.loads(wearfem.Problem.builtin("punch-b40").to_toml())
+    cases = [
+        ({**d, "contact": {**d["contact"], "friction": "x"}}, "contact.friction"),
+        ({**d, "wear": {**d["wear"], "body1": {**d["wear"]["body1"], "bta": 2}}}, "wear.body1.bta"),
+        ({**d, "probes": {"M": {"body": "punch"}}}, "probes.M.at"),
+    ]
+    for broken, key in cases:
+        with pytest.raises(wearfem.WearfemError) as e:
+            wearfem.Problem.from_dict(broken)
+        assert e.value.key == key
+        assert e.value.file == "<dict>"
+
+
 def test_pickle_keeps_overrides(punch):
     p = punch.with_overrides({"contact.friction": 0.1})
     q = pickle.loads(pickle.dumps(p))

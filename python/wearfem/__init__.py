@@ -16,6 +16,7 @@ Units everywhere: mm, N, MPa (N/mm²), s; rigid wear per period: ``lambda_F`` in
 from __future__ import annotations
 
 import json
+import re as _re
 import warnings as _warnings
 from typing import Any, Callable, Dict, Mapping, Optional
 
@@ -304,8 +305,14 @@ class Problem:
 
     @classmethod
     def from_dict(cls, d: Mapping[str, Any], file: str = "<dict>") -> "Problem":
-        """Validate a problem given as nested dicts and lists (the TOML file's structure)."""
-        return cls.from_toml(_toml_text(d, file), file)
+        """Validate a problem given as nested dicts and lists (the TOML file's structure).
+        An error names the dotted key (``wear.body1.beta``, ``probes.M.at``)."""
+        try:
+            return cls.from_toml(_toml_text(d, file), file)
+        except WearfemError as e:
+            # Its line number is of the TOML text made from the dict, which the caller never sees.
+            key = _re.sub(r" \(line \d+\)$", "", e.key)
+            raise WearfemError(e.file, key, e.message) from None
 
     @classmethod
     def builtin(cls, name: str) -> "Problem":
