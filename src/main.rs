@@ -395,6 +395,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     let settled = d.wear <= wearfem::wear::STEADY_REPORT_LIMIT;
                     let verdict = if result.steady_check.reached(h) {
                         "at the steady state"
+                    } else if matches!(result.steady_check, SteadyCheck::SeparateZones { .. }) {
+                        "NOT a steady state of one rigid wear per period, and none exists to reach (run longer only to see whether the pressures still change)"
                     } else if settled {
                         "NOT at the steady state, though one cycle changes little: a slow approach (run longer) or a schedule that settles beside it (explicit `substeps`, very large k); `wearfem steady` gives the steady state directly"
                     } else {
@@ -403,6 +405,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     let against = match &result.steady_check {
                         SteadyCheck::Compared { pressure, seconds } => format!("pressures {:.2} % of the peak from the steady state's (`wearfem steady`, computed in {seconds:.3} s)", 100.0 * pressure),
                         SteadyCheck::Unavailable(why) => format!("no steady state to compare with ({why})"),
+                        SteadyCheck::SeparateZones { .. } => result.steady_check.to_string(),
                         SteadyCheck::NoCycle => String::new(),
                     };
                     // δw compares the two half cycles of a period: none under monotonic sliding.

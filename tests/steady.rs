@@ -500,3 +500,24 @@ fn a_run_with_b_2_and_the_load_at_one_end_reaches_its_steady_state() {
         );
     }
 }
+
+#[test]
+fn a_run_that_rocks_on_two_facets_is_named_so() {
+    // Load variant 3's first window only (25 MPa on [1070, 1100]: the resultant at 1085 mm)
+    // with μ = 0.25 and the pin 40 mm up: the friction moment shifts each half's resultant by
+    // μ l_z = 10 mm, to 1075 in '+' and 1095 in '−' (moment balance about the pin), and the
+    // wear separates the zones. No steady state with one rigid wear per period exists; the run
+    // said "NOT yet at the steady state: run longer, or use `wearfem steady`", which cannot
+    // help.
+    let p = problem("punch-b40-variant3", &[("normal = 12.5", "normal = 0.0")]);
+    let wear_run = run(&p, None);
+    match wear_run.steady_check {
+        wearfem::steady_check::SteadyCheck::SeparateZones { plus, minus } => {
+            assert!(plus[0] <= 1075.0 && 1075.0 <= plus[1], "{plus:?}");
+            assert!(minus[0] <= 1095.0 && 1095.0 <= minus[1], "{minus:?}");
+            assert!(plus[1] <= minus[0], "{plus:?} {minus:?}");
+        }
+        other => panic!("{other:?}"),
+    }
+    assert!(!wear_run.steady_check.reached(&wear_run.history));
+}

@@ -271,6 +271,9 @@ impl WearRun {
                         (number(*pressure), json!("compared"))
                     }
                     SteadyCheck::Unavailable(why) => (Value::Null, json!(why)),
+                    SteadyCheck::SeparateZones { .. } => {
+                        (Value::Null, json!(self.steady_check.to_string()))
+                    }
                     SteadyCheck::NoCycle => (Value::Null, json!("no complete cycle")),
                 };
                 summary["steady_distance"] = json!({

@@ -33,8 +33,36 @@ pub enum SteadyCheck {
     /// No steady state to compare with: the reason (a fixed plate has none of the form the
     /// steady solver finds; friction can rule one out).
     Unavailable(String),
+    /// No steady state to compare with, and none to expect: the last cycle's two half cycles
+    /// touch separate zones (they share at most one contact point), so each wears its own
+    /// facet with its own rigid motion (the punch rocks) and no state with one rigid wear per
+    /// period exists. The zones' first and last contact points, x in mm.
+    SeparateZones {
+        /// The '+' half cycle's zone.
+        plus: [f64; 2],
+        /// The '−' half cycle's zone.
+        minus: [f64; 2],
+    },
     /// The run has no complete cycle to compare.
     NoCycle,
+}
+
+impl std::fmt::Display for SteadyCheck {
+    /// What the check found, for messages (the distance itself is formatted by the caller).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SteadyCheck::Compared { pressure, .. } => {
+                write!(f, "pressures {:.2} % of the peak from the steady state's", 100.0 * pressure)
+            }
+            SteadyCheck::Unavailable(why) => write!(f, "no steady state to compare with ({why})"),
+            SteadyCheck::SeparateZones { plus, minus } => write!(
+                f,
+                "the half cycles touch separate zones (x = {:.2} … {:.2} mm in '+', {:.2} … {:.2} mm in '−'): each wears its own facet with its own rigid motion (the punch rocks), so no steady state with one rigid wear per period exists",
+                plus[0], plus[1], minus[0], minus[1]
+            ),
+            SteadyCheck::NoCycle => write!(f, "no complete cycle"),
+        }
+    }
 }
 
 impl SteadyCheck {
@@ -87,6 +115,12 @@ pub fn check(
         Err(e) => return SteadyCheck::Unavailable(e.to_string()),
     };
     if state.status != SteadyStatus::Solved {
+        if !integrator.is_monotonic() {
+            if let Some((plus, minus)) = separate_zones(contact, &history.p_plus, &history.p_minus)
+            {
+                return SteadyCheck::SeparateZones { plus, minus };
+            }
+        }
         return SteadyCheck::Unavailable(format!(
             "the steady solve ended with {:?} ({})",
             state.status,
@@ -114,6 +148,27 @@ pub fn check(
         pressure,
         seconds: start.elapsed().as_secs_f64(),
     }
+}
+
+/// The x ranges (mm) of the two half cycles' contact zones when they share at most one
+/// contact point (a rocking punch, [`SteadyCheck::SeparateZones`]); None otherwise, or when a
+/// half carries no pressure.
+fn separate_zones(
+    contact: &CondensedContact,
+    p_plus: &[f64],
+    p_minus: &[f64],
+) -> Option<([f64; 2], [f64; 2])> {
+    let peak = p_plus.iter().chain(p_minus).fold(0.0f64, |m, &p| m.max(p));
+    // Pressures below 1e-9 of the peak are the round-off of a zone's end.
+    let touching =
+        |p: &[f64]| -> Vec<usize> { (0..p.len()).filter(|&i| p[i] > 1e-9 * peak).collect() };
+    let (plus, minus) = (touching(p_plus), touching(p_minus));
+    let shared = plus.iter().filter(|i| minus.contains(i)).count();
+    let range = |zone: &[usize]| -> Option<[f64; 2]> {
+        let x = |i: usize| contact.points.x[i][0];
+        Some([x(*zone.first()?), x(*zone.last()?)])
+    };
+    (shared <= 1).then(|| Some((range(&plus)?, range(&minus)?)))?
 }
 
 /// Largest |profile − reference| over the (profile, reference) pairs, relative to the
