@@ -301,16 +301,10 @@ fn beyond_the_paper() {
         "punch-b40-b0.8",
         &[("a = 1.0, b = 0.8 }", "a = 1.0, b = 2.0 }")],
     );
-    let run = driver::wear(&p, None, |_| {}).unwrap();
-    let h = &run.history;
-    let iterations: usize = h.steps.iter().map(|s| s.iterations).sum();
+    let run = RunFigures::of(&p);
     println!(
         "| b = 2, time integration (scheme = \"implicit\", the default: Newton per step) | run | {} steps, {:.2} iterations per step, {} steps at the iteration limit | p⁺(M); last cycle max abs(run − steady) / peak | {:.4}; {} | 0 (1 % counts as at the steady state) |",
-        h.steps.len(),
-        iterations as f64 / h.steps.len() as f64,
-        h.unconverged_steps,
-        h.p_plus[0],
-        distance(&run.steady_check)
+        run.steps, run.iterations_per_step, run.unconverged, run.p_m, run.distance
     );
     let quadratic = [
         ("a = 1.0, b = 0.8 }", "a = 1.0, b = 2.0 }"),
@@ -323,18 +317,10 @@ fn beyond_the_paper() {
     let (state, _, _) = driver::steady(&p).unwrap();
     // A state the Newton iteration did not finish is no reference.
     assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
-    let run = driver::wear(&p, None, |_| {}).unwrap();
-    let h = &run.history;
-    let iterations: usize = h.steps.iter().map(|s| s.iterations).sum();
+    let run = RunFigures::of(&p);
     println!(
         "| b = 2, time integration (scheme = \"fixed_point\", pointwise criterion, Aitken relaxation) | run | {} steps, {:.1} iterations per step, {} steps at the iteration limit, {} oscillating | p⁺(M); last cycle max abs(run − steady) / peak | {:.4}; {} | steady {:.4}; 0 (1 % counts as at the steady state) |",
-        h.steps.len(),
-        iterations as f64 / h.steps.len() as f64,
-        h.unconverged_steps,
-        h.oscillating_steps,
-        h.p_plus[0],
-        distance(&run.steady_check),
-        state.p_plus[0]
+        run.steps, run.iterations_per_step, run.unconverged, run.oscillating, run.p_m, run.distance, state.p_plus[0]
     );
     // Lift-off: variant 3 without its second window, μ = 0.05; triangle 66.67 MPa → 0 at 1115.
     let lift = [
@@ -386,6 +372,33 @@ fn beyond_the_paper() {
         contact_x(&p, minus_start),
         contact_x(&p, h.p_minus.iter().rposition(|&v| v > 0.0).unwrap_or(0)),
     );
+}
+
+/// What the b = 2 rows report of a wear run of `p`.
+struct RunFigures {
+    steps: usize,
+    iterations_per_step: f64,
+    unconverged: usize,
+    oscillating: usize,
+    /// p⁺ at the first contact point (M), MPa.
+    p_m: f64,
+    distance: String,
+}
+
+impl RunFigures {
+    fn of(p: &Problem) -> RunFigures {
+        let run = driver::wear(p, None, |_| {}).unwrap();
+        let h = &run.history;
+        let iterations: usize = h.steps.iter().map(|s| s.iterations).sum();
+        RunFigures {
+            steps: h.steps.len(),
+            iterations_per_step: iterations as f64 / h.steps.len() as f64,
+            unconverged: h.unconverged_steps,
+            oscillating: h.oscillating_steps,
+            p_m: h.p_plus[0],
+            distance: distance(&run.steady_check),
+        }
+    }
 }
 
 /// A run's own check of its last cycle against the steady state (as `wearfem run` reports
