@@ -349,6 +349,13 @@ impl System<'_> {
                 let now = if active[h][i] {
                     p >= -1e-13 * force_scale
                 } else if grazing[i] {
+                    // Not converged while it penetrates here: the next linearisation grazes
+                    // in this half instead, and the state written is then one whose points
+                    // out of contact have no negative gap in any half (the pressures are the
+                    // contact solution of the shape written).
+                    if self.gap_at(z, h, i) < -1e-9 * self.gap_terms(z, h, i) {
+                        changed = true;
+                    }
                     false
                 } else {
                     // A point in contact in another half has a wear row that fixes its shape:
