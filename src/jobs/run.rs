@@ -281,6 +281,7 @@ impl WearRun {
                     "wear": number(d.wear),
                     "delta_w": number(d.delta_w),
                     "summed_pressure": number(d.summed_pressure),
+                    "closing": number(d.closing),
                 });
                 if let Some(why) = self.summed_pressure_unavailable() {
                     // Both compare the two half cycles of a period; a spread over fewer than

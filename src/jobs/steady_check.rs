@@ -73,7 +73,7 @@ impl SteadyCheck {
             SteadyCheck::Compared { pressure, .. } => *pressure <= STEADY_PRESSURE_LIMIT,
             _ => history
                 .steady_distance
-                .is_some_and(|d| d.wear <= crate::wear::STEADY_REPORT_LIMIT),
+                .is_some_and(|d| d.unsettled() <= crate::wear::STEADY_REPORT_LIMIT),
         }
     }
 }

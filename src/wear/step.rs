@@ -198,12 +198,13 @@ impl WearIntegrator {
                         let (local, change, peak) = d.compare(&hist.p_plus, minus);
                         d.extrapolate = c.accepts(local, peak);
                         steady_now =
-                            step > 4 && c.end_macro_step(local, change, peak, distance.wear);
+                            step > 4 && c.end_macro_step(local, change, peak, distance.unsettled());
                     }
                 }
                 if let (Some(c), Some(b)) = (controller.as_mut(), bdf2.as_mut()) {
                     let (local, change, peak) = b.end_cycle(k, &hist.p_plus, minus);
-                    steady_now = step > 4 && c.end_macro_step(local, change, peak, distance.wear);
+                    steady_now =
+                        step > 4 && c.end_macro_step(local, change, peak, distance.unsettled());
                 }
             }
             match bdf2.as_ref() {
