@@ -429,7 +429,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
             match &h.stopped {
                 Some((step, wearfem::wear::StopReason::SteadyState)) => {
-                    println!("adaptive schedule: steady state reached at step {step}");
+                    if result.steady_check.reached(h) {
+                        println!("adaptive schedule: steady state reached at step {step}");
+                    } else {
+                        // Its own estimate and the check against the steady state disagree:
+                        // the check wins, and the user hears both.
+                        eprintln!("warning: {}: the adaptive schedule stopped at step {step}, its estimate of the distance still to go being below wear.adaptive.steady_tolerance, but the last cycle is NOT at the steady state (above): a slow mode fooled the estimate; lower steady_tolerance or run a fixed schedule with more steps", p.file);
+                    }
                 }
                 Some((step, reason)) => {
                     // A first step that fails on loads no pressure can balance says so.
