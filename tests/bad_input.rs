@@ -716,3 +716,23 @@ fn unknown_example_to_show_lists_the_examples() {
         assert!(stderr.contains(name), "{stderr}");
     }
 }
+
+#[test]
+fn a_plate_pinned_at_the_contact_arcs_centre_is_refused() {
+    // Red team 22, F3: the brake's plate turning about the disc's centre slides the shoe along
+    // its arc and moves no contact point along its normal: nothing resists that rotation.
+    // `contact` reported a rotation of 5.3e8 rad and pressures 25 % off, `steady` "Solved".
+    let text = wearfem::examples::example("brake").unwrap().replace(
+        "motion = \"vertical\"",
+        "motion = \"vertical_rotation\"\npin = [0.0, 0.0]",
+    );
+    assert!(text.contains("pin = [0.0, 0.0]"));
+    let (code, err) = run_cli("contact", &[], &text, "brake_pin_at_centre");
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("plate.pin"), "{err}");
+    assert!(err.contains("centre of curvature"), "{err}");
+    // A pin off the centre is a real lever arm.
+    let text = text.replace("pin = [0.0, 0.0]", "pin = [0.0, 100.0]");
+    let (code, err) = run_cli("contact", &[], &text, "brake_pin_off_centre");
+    assert_ne!(code, 2, "{err}");
+}

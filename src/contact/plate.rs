@@ -109,9 +109,44 @@ pub(super) fn plate_modes(
         ));
     }
     let names = modes.iter().map(|m| m.0).collect();
-    let phis = modes
+    let phis: Vec<Vec<Point>> = modes
         .iter()
         .map(|(_, phi)| points.x.iter().map(|&x| phi(x)).collect())
         .collect();
+    if phis.len() == 2 && moves_together(&phis, points) {
+        return Err(problem.error(
+            "plate.pin",
+            format!(
+                "turning the plate about the pin at ({}, {}) moves the contact points along their normals in the same pattern as its vertical translation (or not at all: the pin is at the contact edge's centre of curvature), so no contact pressure resists one combination of the two, and the plate would move freely (red team 22: a rotation of 5e8 rad, pressures 25 % off); move the pin, or use motion = \"vertical\"",
+                pin[0], pin[1]
+            ),
+        ));
+    }
     Ok((phis, names, load, (force, moment)))
+}
+
+/// Whether the two plate modes' normal displacements at the contact points are linearly
+/// dependent (to round-off): the Gram matrix of the patterns n·φ_k, weighted by the points'
+/// lengths, is then singular.
+fn moves_together(phis: &[Vec<Point>], points: &ContactPoints) -> bool {
+    let normal_part = |k: usize, i: usize| {
+        let (phi, n) = (phis[k][i], points.normal[i]);
+        phi[0] * n[0] + phi[1] * n[1]
+    };
+    let gram = |k: usize, l: usize| -> f64 {
+        (0..points.x.len())
+            .map(|i| points.weight[i] * normal_part(k, i) * normal_part(l, i))
+            .sum()
+    };
+    let (a, b, c) = (gram(0, 0), gram(0, 1), gram(1, 1));
+    // Against the size of the modes' whole displacements, not of their normal parts: a pin
+    // at the centre of curvature leaves the rotation's normal part at round-off, whose
+    // direction is arbitrary. Exact geometry puts it near 1e-30 of the scale, a real lever
+    // arm far above 1e-10.
+    let size = |k: usize| -> f64 {
+        (0..points.x.len())
+            .map(|i| points.weight[i] * (phis[k][i][0].powi(2) + phis[k][i][1].powi(2)))
+            .sum()
+    };
+    a * c - b * b <= 1e-10 * size(0) * size(1)
 }
