@@ -521,3 +521,28 @@ fn a_run_that_rocks_on_two_facets_is_named_so() {
     }
     assert!(!wear_run.steady_check.reached(&wear_run.history));
 }
+
+#[test]
+fn no_steady_state_where_no_contact_carries_the_load() {
+    // Red team 21: monotonic sliding with the load on the first 5 mm (resultant 2.5 mm from
+    // the corner) and μ = 0.2: the friction moment about the pin, 40 μ F, moves the contact's
+    // resultant 8 mm, off the punch. No contact state exists, and the steady iteration ended
+    // "Solved" with every pressure zero and a rigid wear of 4e18 mm per step.
+    let p = problem(
+        "punch-b40",
+        &[
+            (
+                "normal = 16.666",
+                "normal = 16.666\nwindow = { x = [1070.0, 1075.0] }",
+            ),
+            ("friction = 0.25", "friction = 0.2"),
+            ("a = 1.0, b = 1.0 }", "a = 1.0, b = 2.0 }"),
+            (
+                "sliding = \"reciprocating\"",
+                "sliding = \"monotonic\"\nspeed = 30.0\nstep_time = 0.1",
+            ),
+        ],
+    );
+    let (state, _, _) = driver::steady(&p).unwrap();
+    assert_ne!(state.status, SteadyStatus::Solved, "{:?}", state.rigid_wear);
+}
