@@ -546,3 +546,39 @@ fn no_steady_state_where_no_contact_carries_the_load() {
     let (state, _, _) = driver::steady(&p).unwrap();
     assert_ne!(state.status, SteadyStatus::Solved, "{:?}", state.rigid_wear);
 }
+
+#[test]
+fn a_run_at_its_steady_state_does_not_stop_on_a_degenerate_contact_solve() {
+    // Red team 21: punch-b40 with 32 elements along the punch, its load on the first 5 mm and
+    // μ = 0.02 stopped at step 2932, at the steady state, on "a contact solve failed" with
+    // residuals of 1e-12 quoted: the active set cycled at a point with p ≈ 0 and d ≈ 0, Lemke's
+    // method ended on a ray, and the active set's last iterate, a solution by the residual
+    // check, was thrown away. Theory for the state it reaches: p⁺ + p⁻ is the triangle of
+    // eq. 19 on 3w/2 = 7.5 mm (a mesh line), peak 4 F0 / (t 7.5), F0 = 16.666 · 5 · 10 N.
+    let p = problem(
+        "punch-b40",
+        &[
+            ("u = 8", "u = 32"),
+            (
+                "normal = 16.666",
+                "normal = 16.666\nwindow = { x = [1070.0, 1075.0] }",
+            ),
+            ("friction = 0.25", "friction = 0.02"),
+        ],
+    );
+    let wear_run = run(&p, Some(3200));
+    let h = &wear_run.history;
+    assert!(h.stopped.is_none(), "{:?}", h.stopped);
+    let peak = 4.0 * 16.666 * 5.0 * 10.0 / (10.0 * 7.5);
+    for (i, x) in wear_run.contact.points.x.iter().enumerate() {
+        let triangle = (peak * (1077.5 - x[0]) / 7.5).max(0.0);
+        let sum = h.p_plus[i] + h.p_minus[i];
+        // After 3200 steps the run's wear per period is rigid to about 1e-10; 1e-6 of the
+        // peak fails on any other shape.
+        assert!(
+            (sum - triangle).abs() < 1e-6 * peak,
+            "x = {}: {sum} vs {triangle}",
+            x[0]
+        );
+    }
+}
