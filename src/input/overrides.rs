@@ -414,8 +414,21 @@ fn error_key(text: &str, at: usize, message: &str) -> Option<String> {
 fn table_above(lines: &[&str], end: usize) -> String {
     let mut counts: std::collections::HashMap<String, usize> = Default::default();
     let mut table = String::new();
+    // Lines inside a value written over several lines (an array of corners, a long string)
+    // are not headers, whatever they start with (red team 21: `[1000.0, 100.0],` was one).
+    let mut depth = 0i64;
+    let mut in_long_string = false;
     for l in &lines[..end.min(lines.len())] {
         let l = l.trim();
+        let inside = depth > 0 || in_long_string;
+        (depth, in_long_string) = nesting_after(l, depth, in_long_string);
+        if inside {
+            continue;
+        }
+        if l.starts_with('[') {
+            // A header: its own brackets do not open a value.
+            depth = 0;
+        }
         if let Some(name) = l.strip_prefix("[[").and_then(|r| r.split("]]").next()) {
             let name = name.trim().to_string();
             // A new entry of a parent restarts the counts of its children.
@@ -427,6 +440,47 @@ fn table_above(lines: &[&str], end: usize) -> String {
         }
     }
     table
+}
+
+/// The bracket depth of values and whether a triple-quoted string is open after `line`,
+/// from those before it; quotes and comments are skipped (roughly: enough to tell the lines
+/// of a value written over several lines from headers).
+fn nesting_after(line: &str, mut depth: i64, mut in_long_string: bool) -> (i64, bool) {
+    let mut rest = line;
+    while !rest.is_empty() {
+        if in_long_string {
+            match rest.find("\"\"\"").or_else(|| rest.find("'''")) {
+                Some(i) => {
+                    in_long_string = false;
+                    rest = &rest[i + 3..];
+                }
+                None => return (depth, true),
+            }
+            continue;
+        }
+        if rest.starts_with("\"\"\"") || rest.starts_with("'''") {
+            in_long_string = true;
+            rest = &rest[3..];
+            continue;
+        }
+        let mut chars = rest.chars();
+        let c = chars.next().unwrap_or(' ');
+        match c {
+            '#' => break,
+            '"' | '\'' => {
+                // A one-line string: skip to its closing quote.
+                let body = &rest[1..];
+                let close = body.find(c).map_or(body.len(), |i| i + 1);
+                rest = &body[close.min(body.len())..];
+                continue;
+            }
+            '[' | '{' => depth += 1,
+            ']' | '}' => depth -= 1,
+            _ => {}
+        }
+        rest = chars.as_str();
+    }
+    (depth.max(0), in_long_string)
 }
 
 /// `a.b.c` with each prefix that is an array of tables given its current index (count − 1).
@@ -511,7 +565,13 @@ pub fn parse_spec(
     match failure {
         Some((Some(o), e)) => Err(ProblemError {
             file: file.into(),
-            key: o.key.clone(),
+            // The reader stops at its first error, so an override that mends one error of the
+            // file shows the next: charge the override only if the error is at its key
+            // (red team 21: a typo in [contact] was blamed on `--set analysis.p=8`).
+            key: match key_in(&table, e.message()) {
+                Some(key) if !concerns(&key, &o.key) => key,
+                _ => o.key.clone(),
+            },
             message: one_line(e.message()),
         }),
         Some((None, e)) => Err(file_error(e)),
@@ -522,6 +582,28 @@ pub fn parse_spec(
             message: "could not be read".into(),
         }),
     }
+}
+
+/// The dotted key of the reading error `message` in `table` (the file with its overrides),
+/// found by reading the table written out as text, whose spans the error then has.
+fn key_in(table: &toml::Table, message: &str) -> Option<String> {
+    let text = toml::to_string(table).ok()?;
+    let error = toml::from_str::<ProblemSpec>(&text).err()?;
+    if error.message() != message {
+        return None;
+    }
+    error_key(&text, error.span()?.start.min(text.len()), message)
+}
+
+/// Whether an error at `key` concerns the override of `set`: the same key, one inside it, or
+/// a table that holds it.
+fn concerns(key: &str, set: &str) -> bool {
+    let within = |inner: &str, outer: &str| {
+        inner == outer
+            || inner.starts_with(&format!("{outer}."))
+            || inner.starts_with(&format!("{outer}["))
+    };
+    within(key, set) || within(set, key)
 }
 
 /// A problem file's text with `overrides` applied, as TOML text (for `Problem.to_toml` in

@@ -84,7 +84,7 @@ impl std::fmt::Display for StopReason {
                 tolerance,
             } => write!(
                 f,
-                "the implicit step's iteration did not converge (linearisation error {criterion:.3e} % of the largest wear after wear.max_iterations iterations, tolerance {tolerance:e} %)"
+                "the implicit step's iteration did not converge (linearisation error {criterion:.3e} % of the largest wear after wear.max_iterations iterations, tolerance {tolerance:e} %; for b far from 1 Newton's method may need more: raise wear.max_iterations, or lower the step factor k)"
             ),
             StopReason::NonFiniteWear => write!(f, "the wear stopped being finite"),
             StopReason::SteadyState => write!(f, "the steady state was reached"),

@@ -224,3 +224,32 @@ fn overrides_may_supply_what_the_file_lacks() {
     let e = parse_spec(&text, "t.toml", &[set("analysis.p=x")]).unwrap_err();
     assert_eq!(e.key, "analysis.p");
 }
+
+#[test]
+fn lines_of_a_multi_line_value_are_not_headers() {
+    // Red team 21: after a `corners` list written one point per line, a syntax error (which
+    // the span reading cannot parse) was named `1000.0, 100.0.material`.
+    let text = "[[bodies]]\nname = \"a\"\n[[bodies.blocks]]\ncorners = [\n  [0.0, 0.0],\n  [1.0, 0.0],\n]\ndescription = \"\"\"\n[not a header]\n\"\"\"\nmaterial = \n";
+    assert_eq!(
+        key_on_line(text, 11).as_deref(),
+        Some("bodies[0].blocks[0].material")
+    );
+    let e = parse_spec(text, "t.toml", &[]).unwrap_err();
+    assert!(
+        e.key.starts_with("bodies[0].blocks[0].material (line 11)"),
+        "{}",
+        e.key
+    );
+}
+
+#[test]
+fn an_error_of_the_file_is_not_blamed_on_an_override() {
+    // Red team 21: a file without `p` and with a typo in [contact], read with `--set
+    // analysis.p=8`: the typo (the next error, once `p` is supplied) was charged to the
+    // override.
+    let text = punch()
+        .replace("p = 8\n", "")
+        .replace("friction = 0.25", "frction = 0.25");
+    let e = parse_spec(&text, "t.toml", &[Override::parse("analysis.p=8").unwrap()]).unwrap_err();
+    assert_eq!(e.key, "contact.frction");
+}
