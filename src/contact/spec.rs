@@ -108,10 +108,10 @@ pub fn check_settings(problem: &Problem) -> Result<(), ProblemError> {
     Ok(())
 }
 
-/// The contact section and the indices of body 1 and body 2, checked.
 /// Largest Coulomb coefficient accepted.
 pub const MAX_FRICTION: f64 = 10.0;
 
+/// The contact section and the indices of body 1 and body 2, checked.
 pub(super) fn contact_section(
     problem: &Problem,
 ) -> Result<(&ContactSpec, usize, usize), ProblemError> {

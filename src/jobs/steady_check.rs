@@ -48,12 +48,14 @@ pub enum SteadyCheck {
 }
 
 impl std::fmt::Display for SteadyCheck {
-    /// What the check found, for messages (the distance itself is formatted by the caller).
+    /// What the check found, as the console says it.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            SteadyCheck::Compared { pressure, .. } => {
-                write!(f, "pressures {:.2} % of the peak from the steady state's", 100.0 * pressure)
-            }
+            SteadyCheck::Compared { pressure, seconds } => write!(
+                f,
+                "pressures {:.2} % of the peak from the steady state's (`wearfem steady`, computed in {seconds:.3} s)",
+                100.0 * pressure
+            ),
             SteadyCheck::Unavailable(why) => write!(f, "no steady state to compare with ({why})"),
             SteadyCheck::SeparateZones { plus, minus } => write!(
                 f,
