@@ -14,6 +14,7 @@ use crate::kinematics::{half_period_sliding, paper_schedule};
 
 mod adaptive;
 pub mod kinematics;
+pub mod law;
 mod outcome;
 mod schemes;
 mod step;
@@ -458,6 +459,15 @@ impl WearIntegrator {
                     return bad(
                         &format!("{name}.beta"),
                         format!("β̃ ∫|v|ᵃ dτ overflows ({per_half_period}): β̃, a or the sliding amplitude/speed is out of range"),
+                    );
+                }
+                // A body given a wear law must wear: an integral that underflows to zero (or
+                // to a subnormal, which loses its digits) would be taken for β̃ = 0 (red team
+                // 23: a = 10 with u₀ = 1e-40 mm, "no body wears (all β̃ are zero)").
+                if l.beta > 0.0 && per_half_period < f64::MIN_POSITIVE {
+                    return bad(
+                        &format!("{name}.beta"),
+                        format!("β̃ ∫|v|ᵃ dτ underflows ({per_half_period:e}, β̃ = {:e}): a or the sliding amplitude/speed is out of range (β̃ = 0 switches the wear off)", l.beta),
                     );
                 }
             }

@@ -207,35 +207,42 @@ fn monotonic_steady_state_follows_the_sliding_direction() {
 
 #[test]
 fn steady_state_for_b_below_one_meets_eq_23() {
-    // b = 0.5: the wear law has an infinite slope at p = 0, where plain Newton cycles. Eq. 23:
-    // (p⁺)ᵇ + (p⁻)ᵇ uniform, and the edge (one half cycle unloaded) at 2^(1/b) = 4 times the
-    // pressure where p⁺ = p⁻. The solve is exact up to round-off: 1e-9.
-    let b = 0.5;
-    let p = problem(
-        "punch-b40-b0.8",
-        &[("a = 1.0, b = 0.8 }", "a = 1.0, b = 0.5 }")],
-    );
-    let (state, _, _) = driver::steady(&p).unwrap();
-    assert_eq!(state.status, SteadyStatus::Solved);
-    let sums: Vec<f64> = state
-        .p_plus
-        .iter()
-        .zip(&state.p_minus)
-        .map(|(a, c)| a.powf(b) + c.powf(b))
-        .collect();
-    for s in &sums {
-        assert!(
-            (s - sums[0]).abs() < 1e-9 * sums[0],
-            "eq. 23b: {s} vs {}",
-            sums[0]
-        );
+    // b < 1: the wear law has an infinite slope at p = 0, where plain Newton cycles, and a
+    // secant converged at a rate of 1 − b (b ≤ 0.17 failed: red team 23). Eq. 23:
+    // (p⁺)ᵇ + (p⁻)ᵇ uniform, and the edge (one half cycle unloaded) at 2^(1/b) times the
+    // pressure where p⁺ = p⁻ (b = 0.05: 2²⁰). The solve is exact up to round-off: 1e-9.
+    for b in [0.05, 0.1, 0.12, 0.15, 0.17, 0.2, 0.5] {
+        let law = format!("a = 1.0, b = {b} }}");
+        let p = problem("punch-b40-b0.8", &[("a = 1.0, b = 0.8 }", &law)]);
+        let (state, contact, _) = driver::steady(&p).unwrap();
+        assert_eq!(state.status, SteadyStatus::Solved, "b = {b}");
+        let sums: Vec<f64> = state
+            .p_plus
+            .iter()
+            .zip(&state.p_minus)
+            .map(|(a, c)| a.powf(b) + c.powf(b))
+            .collect();
+        for s in &sums {
+            assert!(
+                (s - sums[0]).abs() < 1e-9 * sums[0],
+                "b = {b}, eq. 23b: {s} vs {}",
+                sums[0]
+            );
+        }
+        // Eq. 23c where the edge is unloaded in one half cycle (for small b the friction
+        // moment need not unload it: b = 0.05 carries 193.6 and 0.67 MPa there).
+        let (high, low) = (state.p_plus[0], state.p_minus[0]);
+        if high.min(low) == 0.0 {
+            let equal = (sums[0] / 2.0).powf(1.0 / b);
+            let ratio = 2f64.powf(1.0 / b);
+            let edge = high.max(low);
+            assert!(
+                (edge - ratio * equal).abs() < 1e-9 * edge,
+                "b = {b}, eq. 23c: {edge} vs {ratio} × {equal}"
+            );
+        }
+        assert_shape_reproduces_pressures(&state, &contact, &format!("b = {b}"));
     }
-    let equal = (sums[0] / 2.0).powf(1.0 / b);
-    let edge = state.p_plus[0].max(state.p_minus[0]);
-    assert!(
-        (edge - 4.0 * equal).abs() < 1e-9 * edge,
-        "eq. 23c: {edge} vs 4 × {equal}"
-    );
 }
 
 #[test]
@@ -337,8 +344,9 @@ fn steady_state_with_lift_off_for_power_laws() {
     // Σ_h W(p_h) ∝ (p⁺)ᵇ + (p⁻)ᵇ, must be a rigid-body motion of the pinned plate, i.e. linear in
     // x, wherever the punch touches in either half cycle; it is zero where it never touches;
     // and the shape, given to the ordinary contact solver, gives back both pressures.
-    // These cases made the Newton matrix singular (zero wear slope at p = 0) or cycled.
-    for (b, mu) in [(0.5, "0.05"), (3.0, "0.1")] {
+    // These cases made the Newton matrix singular (zero wear slope at p = 0) or cycled, and
+    // b = 0.1 did not converge before Newton's step was taken in the wear.
+    for (b, mu) in [(0.1, "0.05"), (0.5, "0.05"), (3.0, "0.1")] {
         let law = format!("a = 1.0, b = {b:.1} }}");
         let friction = format!("friction = {mu}");
         let p = problem(
@@ -356,8 +364,10 @@ fn steady_state_with_lift_off_for_power_laws() {
             .map(|i| state.p_plus[i].powf(b) + state.p_minus[i].powf(b))
             .collect();
         let touching: Vec<usize> = (0..x.len()).filter(|&i| wear[i] > 0.0).collect();
+        // For b = 0.1 the pressure (a line to the power 10) puts its resultant 15 mm from
+        // the edge without lifting off.
         assert!(
-            touching.len() > 10 && touching.len() + 3 <= x.len(),
+            touching.len() > 10 && (b < 0.5 || touching.len() + 3 <= x.len()),
             "b = {b}: {} of {} points touch",
             touching.len(),
             x.len()

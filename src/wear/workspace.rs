@@ -37,6 +37,8 @@ pub(super) struct StepOutcome {
 pub(super) struct Workspace {
     /// ∫|v|ᵃ dτ of one half period for each wear law.
     pub sliding: Vec<f64>,
+    /// The wear law of one half period, W(p) = Σ c pᵇ, as (c, b) pairs ([`crate::wear::law`]).
+    pub terms: Vec<(f64, f64)>,
     /// Lobatto weight × edge Jacobian of each contact point (mm), for eq. 27's integral.
     pub weight: Vec<f64>,
     /// Contact area w_i t of each point, mm².
@@ -48,6 +50,9 @@ pub(super) struct Workspace {
     pub slope: Vec<f64>,
     pub linear_wear: Vec<f64>,
     pub linearised_at: Vec<f64>,
+    /// Points that Newton's step in the wear sent out of contact in this step: from then on
+    /// linearised with the chord ([`crate::wear::law::chord_slope`]).
+    pub chord: Vec<bool>,
     /// Wear of one half period of the last second half cycle, mm, and that wear times k: the
     /// look-ahead of the next first half cycle.
     pub second_half: Vec<f64>,
@@ -67,12 +72,14 @@ impl Workspace {
     pub fn new(n: usize) -> Workspace {
         Workspace {
             sliding: vec![],
+            terms: vec![],
             weight: vec![0.0; n],
             area: vec![0.0; n],
             compliance: vec![0.0; n],
             zero: vec![0.0; n],
             slope: vec![0.0; n],
             linear_wear: vec![0.0; n],
+            chord: vec![false; n],
             linearised_at: vec![0.0; n],
             last_pressure: [vec![0.0; n], vec![0.0; n]],
             second_half: vec![0.0; n],

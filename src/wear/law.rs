@@ -1,0 +1,194 @@
+//! The wear of one half period as a function of the contact pressure,
+//! W(p) = Σ_l c_l p^b_l (mm, p in MPa, c_l = β̃_l ∫|v|^a_l dτ), and what Newton's methods need
+//! of it: a slope to linearise with, and for a concave law (every b ≤ 1) the step taken in the
+//! wear instead of the pressure.
+//!
+//! Why the wear: for b < 1 the law is concave with an infinite slope at p = 0. Newton's
+//! method in the pressure overshoots there (from above the tangent reaches p(1 − 1/b) < 0, and
+//! the active sets cycle); its secant W(p)/p instead converges only linearly, at a rate of
+//! about 1 − b (b = 0.1: some 260 iterations). The pressure as a function of the wear,
+//! p = W⁻¹(w), is convex with a zero slope at w = 0, and Newton's method in w converges
+//! quadratically. A Newton step in w is the step in p with the tangent slope, followed by
+//! moving the new pressure onto the law at the linear model's wear ([`step_in_wear`]).
+
+/// Wear of one half period at pressure `p` (MPa; negative counts as 0), mm.
+pub fn half_period_wear(terms: &[(f64, f64)], p: f64) -> f64 {
+    let p = p.max(0.0);
+    terms
+        .iter()
+        .map(|&(c, b)| if b == 1.0 { c * p } else { c * p.powf(b) })
+        .sum()
+}
+
+/// Whether W is concave and not linear: every b ≤ 1 and some b < 1 (with c > 0). Then
+/// Newton's method is taken in the wear ([`step_in_wear`]).
+pub fn is_concave(terms: &[(f64, f64)]) -> bool {
+    let wearing = || terms.iter().filter(|t| t.0 > 0.0);
+    wearing().all(|t| t.1 <= 1.0) && wearing().any(|t| t.1 < 1.0)
+}
+
+/// Below this fraction of the reference pressure a concave law's tangent is not used: its
+/// slope p^(b−1) grows without bound (b = 0.05 at 1e-300 MPa overflows), and a pressure that
+/// small is a point just brought into contact, for which the secant to the reference serves.
+const TANGENT_FLOOR: f64 = 1e-12;
+
+/// The slope dW/dp (mm/MPa) Newton's method linearises W with at `p` (MPa).
+///
+/// - b = 1: the law's own slope.
+/// - A concave law ([`is_concave`]): the tangent, the step being taken in the wear.
+/// - b > 1: the tangent.
+/// - b < 1 in a law that also has b > 1 terms: the secant W(p)/p, which stays positive where
+///   the tangent in p overshoots (linear convergence at about 1 − b).
+/// - At p = 0 (for a concave law below [`TANGENT_FLOOR`] of `reference`) the secant to the
+///   reference pressure `reference` (MPa, a mean contact pressure): a point just brought into
+///   contact keeps a wear row that depends on its own pressure, with a slope of the right
+///   size. `zero_slope_above_1` gives b > 1 terms a zero slope there instead (their tangent).
+pub fn newton_slope(terms: &[(f64, f64)], p: f64, reference: f64, zero_slope_above_1: bool) -> f64 {
+    let p = p.max(0.0);
+    let concave = is_concave(terms);
+    let from_reference = p == 0.0 || (concave && p < TANGENT_FLOOR * reference);
+    terms
+        .iter()
+        .map(|&(c, b)| {
+            if b == 1.0 {
+                c
+            } else if from_reference {
+                if b > 1.0 && zero_slope_above_1 {
+                    0.0
+                } else {
+                    c * reference.powf(b - 1.0)
+                }
+            } else if b > 1.0 || concave {
+                c * b * p.powf(b - 1.0)
+            } else {
+                c * p.powf(b - 1.0)
+            }
+        })
+        .sum()
+}
+
+/// The chord slope W(p)/p (mm/MPa) through the origin, at p > 0 (MPa): a linear model with no
+/// intercept, which converges more slowly than the tangent (at a rate of about 1 − b) but
+/// does not send a point whose pressure should be nearly zero in and out of contact by
+/// turns, as a concave tangent's positive intercept can. At p = 0, [`newton_slope`]'s.
+pub fn chord_slope(terms: &[(f64, f64)], p: f64, reference: f64) -> f64 {
+    if p > 0.0 {
+        half_period_wear(terms, p) / p
+    } else {
+        newton_slope(terms, p, reference, true)
+    }
+}
+
+/// The pressure (MPa) whose wear is `w` (mm): W⁻¹(w) for an increasing W with W(0) = 0, to
+/// round-off; 0 for w ≤ 0.
+pub fn pressure_of_wear(terms: &[(f64, f64)], w: f64) -> f64 {
+    if w <= 0.0 {
+        return 0.0;
+    }
+    let wearing: Vec<(f64, f64)> = terms.iter().copied().filter(|t| t.0 > 0.0).collect();
+    if let [(c, b)] = wearing[..] {
+        return (w / c).powf(b.recip());
+    }
+    // W reaches w before any one of its terms does, i.e. below the least (w/c)^(1/b); the
+    // root is found by bisection (in ln p once the lower end is positive), which needs no
+    // safeguards and costs some 60 evaluations at points where it is used at all.
+    let mut high = wearing
+        .iter()
+        .map(|&(c, b)| (w / c).powf(b.recip()))
+        .fold(f64::INFINITY, f64::min);
+    let mut low = 0.0f64;
+    for _ in 0..200 {
+        let mid = if low > 0.0 {
+            (low * high).sqrt()
+        } else {
+            0.5 * high
+        };
+        if half_period_wear(&wearing, mid) < w {
+            low = mid;
+        } else {
+            high = mid;
+        }
+        if high - low <= 4.0 * f64::EPSILON * high {
+            break;
+        }
+    }
+    0.5 * (low + high)
+}
+
+/// The step in the wear for a concave law: linearised at `p_hat` (MPa) with the slope
+/// `slope` (mm/MPa), the linear model W(p̂) + s (p − p̂) gave the pressure `p` (MPa). The next
+/// pressure is the one that has the model's wear on the law, W⁻¹(W(p̂) + s (p − p̂)).
+///
+/// - With the tangent ([`newton_slope`]) this is Newton's method in the wear. The new pressure
+///   is ≥ p (the tangent lies above a concave law) and can be positive where p is not.
+/// - With the chord ([`chord_slope`]) the model's wear is s p, and at a point whose wear
+///   outweighs its elastic part (p ≪ the mean, as near the end of a zone) it is the wear the
+///   point needs: W⁻¹ of it is then nearly the solution, where the chord alone would approach
+///   it at a rate of 1 − b.
+/// - Where the model's wear is not positive, `p` itself (then ≤ 0: the point leaves the
+///   contact).
+/// - Other laws, and a linearisation at p̂ = 0 or below [`TANGENT_FLOOR`] of `reference`
+///   (there the slope is the secant to the reference pressure, and W⁻¹ of its model would
+///   send a small p to a vanishing one), keep `p`.
+///
+/// The step in w overshoots where the solution is far above p̂: W⁻¹ of the model's wear can
+/// then be orders of magnitude too large. The new pressure is therefore kept within `GROWTH`
+/// times the larger of p̂ and p, which the quadratic convergence near the solution never
+/// reaches.
+pub fn step_in_wear(terms: &[(f64, f64)], p_hat: f64, slope: f64, p: f64, reference: f64) -> f64 {
+    const GROWTH: f64 = 4.0;
+    if !is_concave(terms) || p_hat <= 0.0 || p_hat < TANGENT_FLOOR * reference {
+        return p;
+    }
+    let model = half_period_wear(terms, p_hat) + slope * (p - p_hat);
+    if model <= 0.0 {
+        return p;
+    }
+    pressure_of_wear(terms, model).min(GROWTH * p_hat.max(p))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_inverse_returns_the_pressure() {
+        for terms in [
+            vec![(2e-3, 0.1)],
+            vec![(2e-3, 0.5), (1e-4, 1.0)],
+            vec![(2e-3, 0.3), (5e-3, 0.7), (0.0, 3.0)],
+        ] {
+            for p in [1e-9, 1e-3, 0.7, 33.3, 1e4] {
+                let w = half_period_wear(&terms, p);
+                let back = pressure_of_wear(&terms, w);
+                // Bisection to 4 ε of p; the single power's closed form to a few ε.
+                assert!((back - p).abs() <= 1e-13 * p, "{terms:?} {p} {back}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_newton_step_in_the_wear_lands_on_a_linear_targets_solution() {
+        // One point whose wear must equal w* (the wear row alone): in w the equation is
+        // linear, so one step from anywhere gives the exact pressure W⁻¹(w*), while the step in
+        // p with the tangent falls short (b < 1: p(1 − 1/b) < 0 from far above).
+        let terms = [(1e-3, 0.1)];
+        let target = half_period_wear(&terms, 10.0);
+        for p_hat in [9.0, 11.0, 30.0] {
+            let slope = newton_slope(&terms, p_hat, 1.0, false);
+            let p_linear = p_hat + (target - half_period_wear(&terms, p_hat)) / slope;
+            let next = step_in_wear(&terms, p_hat, slope, p_linear, 1.0);
+            assert!((next - 10.0).abs() < 1e-12 * 10.0, "{p_hat}: {next}");
+        }
+    }
+
+    #[test]
+    fn which_laws_are_concave() {
+        assert!(is_concave(&[(1.0, 0.5)]));
+        assert!(is_concave(&[(1.0, 0.5), (2.0, 1.0)]));
+        assert!(!is_concave(&[(1.0, 1.0)]));
+        assert!(!is_concave(&[(1.0, 0.5), (2.0, 1.5)]));
+        // A body that does not wear does not count.
+        assert!(is_concave(&[(1.0, 0.5), (0.0, 1.5)]));
+    }
+}
