@@ -396,3 +396,27 @@ fn steady_distance_has_no_meaningless_numbers_and_history_counts_solves() {
         steps.len()
     );
 }
+
+#[test]
+fn a_caller_can_stop_a_run_after_any_step() {
+    // What the Python layer does on Ctrl-C: `wear_until`'s callback breaks after step 7 of
+    // 1700; the run ends there, with that step kept, named as interrupted, and no snapshot
+    // past it.
+    let problem = punch(&[]);
+    let run = wearfem::driver::wear_until(&problem, None, |record| {
+        if record.step == 7 {
+            std::ops::ControlFlow::Break(())
+        } else {
+            std::ops::ControlFlow::Continue(())
+        }
+    })
+    .unwrap();
+    let history = &run.history;
+    assert_eq!(history.steps.len(), 7);
+    assert_eq!(history.steps.last().map(|s| s.step), Some(7));
+    assert_eq!(
+        history.stopped,
+        Some((7, wearfem::wear::StopReason::Interrupted))
+    );
+    assert!(history.snapshots.iter().all(|s| s.step <= 7));
+}

@@ -5,7 +5,14 @@
 //! line writes; the Python half (`python/wearfem/__init__.py`) turns it into numpy arrays.
 //! Every computation runs with the GIL released.
 
+use std::ops::ControlFlow;
 use std::sync::OnceLock;
+use std::time::{Duration, Instant};
+
+/// How often a wear run without a progress callback takes the GIL to let Python handle its
+/// signals (Ctrl-C): often enough to stop at once for a person, rarely enough to cost nothing
+/// (one GIL round trip per 50 ms of run).
+const SIGNAL_INTERVAL: Duration = Duration::from_millis(50);
 
 use pyo3::exceptions::PyValueError;
 
@@ -316,6 +323,11 @@ impl PyProblem {
     }
 
     /// Wear run: summary JSON text. `progress(step, half_period)` is called after each step.
+    ///
+    /// The run holds the GIL only to call `progress` and, at least every
+    /// [`SIGNAL_INTERVAL`], to let Python handle its signals: Ctrl-C (KeyboardInterrupt) or an
+    /// exception of `progress` stops the run after the current step, and is raised (red team
+    /// 24: a notebook could only kill its kernel to stop a long run).
     #[pyo3(signature = (steps = None, progress = None))]
     fn _run(
         &self,
@@ -324,22 +336,31 @@ impl PyProblem {
         progress: Option<PyObject>,
     ) -> PyResult<String> {
         let p = self.model(py)?;
-        let mut callback_error: Option<PyErr> = None;
+        let mut stopped_by: Option<PyErr> = None;
+        let mut last_check = Instant::now();
         let out = py.allow_threads(|| {
-            driver::wear(p, steps, |s| {
-                if let (Some(f), None) = (&progress, &callback_error) {
-                    // Only the callback holds the GIL; an exception it raises is re-raised
-                    // after the run (the integration itself cannot be interrupted).
-                    Python::with_gil(|py| {
-                        if let Err(e) = f.call1(py, (s.step, s.half_period)) {
-                            callback_error = Some(e);
-                        }
-                    });
+            driver::wear_until(p, steps, |s| {
+                if progress.is_none() && last_check.elapsed() < SIGNAL_INTERVAL {
+                    return ControlFlow::Continue(());
                 }
+                last_check = Instant::now();
+                Python::with_gil(|py| {
+                    let called = match &progress {
+                        Some(f) => f.call1(py, (s.step, s.half_period)).map(drop),
+                        None => Ok(()),
+                    };
+                    match called.and_then(|()| py.check_signals()) {
+                        Ok(()) => ControlFlow::Continue(()),
+                        Err(e) => {
+                            stopped_by = Some(e);
+                            ControlFlow::Break(())
+                        }
+                    }
+                })
             })
             .map(|run| run.summary(p))
         });
-        if let Some(e) = callback_error {
+        if let Some(e) = stopped_by {
             return Err(e);
         }
         out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))

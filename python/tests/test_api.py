@@ -173,12 +173,45 @@ def test_an_unpickled_problem_is_built_when_first_used(punch):
         q.title
 
 
-def test_progress_exception_reraised(punch):
+def test_progress_exception_stops_the_run_at_once(punch):
+    """An exception of the callback stops the run after its step (red team 24: all 400 000
+    steps ran first), and is raised."""
+    seen = []
+
     def boom(step, half_period):
-        raise RuntimeError("stop")
+        seen.append(step)
+        if step == 10:
+            raise RuntimeError("stop")
 
     with pytest.raises(RuntimeError, match="stop"):
-        punch.run(steps=3, progress=boom)
+        punch.run(steps=100_000, progress=boom)
+    assert seen == list(range(1, 11))
+
+
+def test_ctrl_c_stops_a_run(punch):
+    """SIGINT stops a run without a progress callback too: the run lets Python handle its
+    signals every 50 ms. 10⁶ steps of punch-b40 take tens of seconds; the signal comes from
+    a timer 0.3 s in, and the run must end with KeyboardInterrupt rather than finish."""
+    import os
+    import signal
+    import threading
+
+    if not hasattr(signal, "SIGINT") or threading.current_thread() is not threading.main_thread():
+        pytest.skip("needs SIGINT in the main thread")
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            punch.run(steps=1_000_000)
+    finally:
+        timer.cancel()
+
+
+def test_run_arguments_are_checked_before_running(punch):
+    with pytest.raises(ValueError, match="steps"):
+        punch.run(steps=-1)
+    with pytest.raises(TypeError, match="progress"):
+        punch.run(steps=3, progress=5)
 
 
 def test_steady_result_fields(punch):
@@ -271,3 +304,30 @@ def test_a_run_without_a_full_cycle_says_so_as_a_study_row(punch):
     assert run.converged and run.p_plus is None
     table = wearfem.study(punch, [{"wear.steps": 1, "wear.record": []}], job="run")
     assert run.status == table["status"][0] != "solved"
+
+
+def test_from_dict_keys_are_plain_strings_and_numpy_bools_are_bools():
+    """Red team 24: np.bool_ was refused; a non-string key and a dotted key came out garbled
+    ('5.5', '"contact.friction".contact.friction')."""
+    tomllib = pytest.importorskip("tomllib")  # Python 3.11+
+    d = tomllib.loads(wearfem.Problem.builtin("punch-b40").to_toml())
+    d["analysis"]["p_check"] = np.bool_(False)
+    wearfem.Problem.from_dict(d)
+    with pytest.raises(wearfem.WearfemError) as bad:
+        wearfem.Problem.from_dict({**d, 5: 1})
+    assert bad.value.key == "5" and "strings" in bad.value.message
+    with pytest.raises(wearfem.WearfemError) as dotted:
+        wearfem.Problem.from_dict({**d, "contact.friction": 0.1})
+    assert dotted.value.key == "contact.friction" and "nest" in dotted.value.message
+
+
+def test_a_file_that_is_not_utf8_names_the_file(tmp_path):
+    path = tmp_path / "latin1.toml"
+    path.write_bytes("title = \"Reibung \xb5\"\n".encode("latin-1"))
+    with pytest.raises(wearfem.WearfemError, match="UTF-8") as e:
+        wearfem.Problem.from_file(path)
+    assert e.value.file == str(path)
+
+
+def test_float_array_is_importable():
+    from wearfem import FloatArray  # noqa: F401  (the stubs declare it)

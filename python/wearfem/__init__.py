@@ -20,7 +20,10 @@ import re as _re
 import warnings as _warnings
 from typing import Any, Callable, Dict, Mapping, Optional
 
+import operator as _operator
+
 import numpy as np
+import numpy.typing as _npt
 
 from ._wearfem import Problem as _Problem
 from ._wearfem import __version__
@@ -37,8 +40,12 @@ __all__ = [
     "SteadyResult",
     "study",
     "examples",
+    "FloatArray",
     "__version__",
 ]
+
+#: The type of every profile: float64 numpy arrays (mm, MPa as each attribute says).
+FloatArray = _npt.NDArray[np.float64]
 
 
 class WearfemError(ValueError):
@@ -301,6 +308,8 @@ class Problem:
                 text = f.read()
         except OSError as e:
             raise WearfemError(path, "(file)", f"cannot read: {e.strerror}") from None
+        except UnicodeDecodeError as e:
+            raise WearfemError(path, "(file)", f"cannot read: not UTF-8 text (byte {e.start})") from None
         return cls.from_toml(text, path)
 
     @classmethod
@@ -371,8 +380,16 @@ class Problem:
         """Wear time integration (``wearfem run``), ``steps`` replacing the file's duration.
 
         ``progress(step, half_period)`` is called after every step (with the GIL held only
-        for the call); an exception it raises is re-raised when the run ends.
+        for the call). An exception it raises, or Ctrl-C (KeyboardInterrupt, also without a
+        ``progress``: the run lets Python handle its signals every 50 ms), stops the run after
+        the current step and is raised; nothing of the run is returned.
         """
+        if steps is not None:
+            steps = _operator.index(steps)
+            if steps < 1:
+                raise ValueError(f"steps must be a positive integer, got {steps}")
+        if progress is not None and not callable(progress):
+            raise TypeError(f"progress must be callable as progress(step, half_period), got {progress!r}")
         return RunResult(json.loads(self._inner._run(steps, progress)))
 
     def steady(self, method: str = "exact") -> SteadyResult:
@@ -402,7 +419,7 @@ def _plain(v: Any) -> Any:
 
 def _toml_value(v: Any, key: str, file: str) -> str:
     """One value as inline TOML; ``key`` names it in the error for a type TOML lacks."""
-    if isinstance(v, bool):
+    if isinstance(v, (bool, np.bool_)):
         return "true" if v else "false"
     if isinstance(v, (int, np.integer)):
         return str(int(v))
@@ -412,15 +429,26 @@ def _toml_value(v: Any, key: str, file: str) -> str:
     if isinstance(v, str):
         return json.dumps(v, ensure_ascii=False)
     if isinstance(v, Mapping):
-        return "{ " + ", ".join(f"{json.dumps(str(k))} = {_toml_value(x, f'{key}.{k}', file)}" for k, x in v.items()) + " }"
+        return "{ " + ", ".join(f"{_toml_key(k, key, file)} = {_toml_value(x, f'{key}.{k}', file)}" for k, x in v.items()) + " }"
     if isinstance(v, (list, tuple, np.ndarray)):
         return "[" + ", ".join(_toml_value(x, f"{key}[{i}]", file) for i, x in enumerate(v)) + "]"
     raise WearfemError(file, key, f"cannot be written in a problem file (type {type(v).__name__})")
 
 
+def _toml_key(k: Any, parent: Optional[str], file: str) -> str:
+    """A dict key as a TOML key: a string without dots (a dotted key would name a key the
+    schema does not have, garbled in the error: nest dicts instead)."""
+    where = f"{parent}.{k}" if parent else str(k)
+    if not isinstance(k, str):
+        raise WearfemError(file, where, f"keys of a problem dict are strings, got {type(k).__name__}")
+    if "." in k:
+        raise WearfemError(file, where, "a key of a problem dict has no dots: nest dicts instead ({'contact': {'friction': 0.3}})")
+    return json.dumps(k)
+
+
 def _toml_text(d: Mapping[str, Any], file: str) -> str:
     """TOML text of nested dicts (inline tables serve every section of the schema)."""
-    return "".join(f"{json.dumps(str(k))} = {_toml_value(v, str(k), file)}\n" for k, v in d.items())
+    return "".join(f"{_toml_key(k, None, file)} = {_toml_value(v, str(k), file)}\n" for k, v in d.items())
 
 
 def examples() -> list:

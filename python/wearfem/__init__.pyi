@@ -6,6 +6,21 @@ from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
+__all__ = [
+    "Problem",
+    "WearfemError",
+    "WearfemWarning",
+    "ProblemError",
+    "ElasticResult",
+    "ContactResult",
+    "RunResult",
+    "SteadyResult",
+    "study",
+    "examples",
+    "FloatArray",
+    "__version__",
+]
+
 __version__: str
 
 FloatArray = npt.NDArray[np.float64]

@@ -11,6 +11,7 @@ use crate::jobs::json::{number, numbers};
 use crate::problem::Problem;
 use crate::wear::{WearHistory, WearIntegrator};
 use serde_json::{json, Value};
+use std::ops::ControlFlow;
 use std::time::Instant;
 
 /// A finished wear run with its set-up.
@@ -67,7 +68,21 @@ pub(crate) fn check_shape_zero_plate(
 pub fn wear(
     problem: &Problem,
     steps: Option<usize>,
-    on_step: impl FnMut(&crate::wear::StepRecord),
+    mut on_step: impl FnMut(&crate::wear::StepRecord),
+) -> Result<WearRun, JobError> {
+    wear_until(problem, steps, |record| {
+        on_step(record);
+        ControlFlow::Continue(())
+    })
+}
+
+/// [`wear`], which `on_step` may stop by returning [`ControlFlow::Break`]: the run then ends
+/// after that step with [`crate::wear::StopReason::Interrupted`] (what the Python layer does on
+/// Ctrl-C or an error of a progress callback).
+pub fn wear_until(
+    problem: &Problem,
+    steps: Option<usize>,
+    on_step: impl FnMut(&crate::wear::StepRecord) -> ControlFlow<()>,
 ) -> Result<WearRun, JobError> {
     let spec = problem
         .spec
@@ -98,7 +113,7 @@ pub fn wear(
     let probes = contact_probes(problem, &contact);
     let probe_index: Vec<usize> = probes.iter().map(|p| p.1).collect();
     let start = Instant::now();
-    let history = integrator.run(
+    let history = integrator.run_until(
         &mut solver,
         &contact,
         &contact.points.initial_gap,

@@ -66,6 +66,9 @@ pub enum StopReason {
     NonFiniteWear,
     /// The adaptive schedule found the steady state to its tolerance.
     SteadyState,
+    /// The caller stopped the run after this step ([`crate::wear::WearIntegrator::run_until`]):
+    /// an interrupt, or an error of its progress callback. The step is kept.
+    Interrupted,
 }
 
 impl std::fmt::Display for StopReason {
@@ -88,6 +91,7 @@ impl std::fmt::Display for StopReason {
             ),
             StopReason::NonFiniteWear => write!(f, "the wear stopped being finite"),
             StopReason::SteadyState => write!(f, "the steady state was reached"),
+            StopReason::Interrupted => write!(f, "the run was interrupted by its caller"),
         }
     }
 }

@@ -14,6 +14,7 @@ use super::{
 use crate::complementarity::{ContactSolver, Direction};
 use crate::contact::{CondensedContact, ContactPoints};
 use crate::kinematics::{factor, partial_sliding};
+use std::ops::ControlFlow;
 
 impl WearIntegrator {
     /// Run the integration from shape `initial` (mm), reporting probes at `probe_points`
@@ -29,6 +30,24 @@ impl WearIntegrator {
         initial: &[f64],
         probe_points: &[usize],
         mut on_step: impl FnMut(&StepRecord),
+    ) -> WearHistory {
+        let on_step = |record: &StepRecord| {
+            on_step(record);
+            ControlFlow::Continue(())
+        };
+        self.run_until(solver, contact, initial, probe_points, on_step)
+    }
+
+    /// [`WearIntegrator::run`], which `on_step` may also stop: after a step for which it
+    /// returns [`ControlFlow::Break`] the run ends with [`StopReason::Interrupted`], that step
+    /// kept (a caller's interrupt, or its progress callback's error).
+    pub fn run_until(
+        &self,
+        solver: &mut ContactSolver,
+        contact: &CondensedContact,
+        initial: &[f64],
+        probe_points: &[usize],
+        mut on_step: impl FnMut(&StepRecord) -> ControlFlow<()>,
     ) -> WearHistory {
         let points = &contact.points;
         let n = points.x.len();
@@ -230,7 +249,7 @@ impl WearIntegrator {
                 probes: probe_points.iter().map(|&i| pressure[i]).collect(),
                 delta_w,
             };
-            on_step(&record);
+            let control = on_step(&record);
             hist.steps.push(record);
             if self.spec.record.contains(&step) || steady_now {
                 hist.snapshots.push(Snapshot {
@@ -244,6 +263,10 @@ impl WearIntegrator {
             }
             if steady_now {
                 hist.stopped = Some((step, StopReason::SteadyState));
+                break;
+            }
+            if control.is_break() {
+                hist.stopped = Some((step, StopReason::Interrupted));
                 break;
             }
         }
