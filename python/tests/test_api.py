@@ -331,3 +331,12 @@ def test_a_file_that_is_not_utf8_names_the_file(tmp_path):
 
 def test_float_array_is_importable():
     from wearfem import FloatArray  # noqa: F401  (the stubs declare it)
+
+
+def test_problems_with_the_same_text_and_overrides_are_equal(punch):
+    """Red team 24: a problem and its own pickle compared unequal."""
+    variant = punch.with_overrides({"contact.friction": 0.1})
+    assert pickle.loads(pickle.dumps(variant)) == variant
+    assert hash(pickle.loads(pickle.dumps(variant))) == hash(variant)
+    assert variant != punch
+    assert punch.with_overrides({"contact.friction": 0.1}) == variant

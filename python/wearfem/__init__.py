@@ -290,6 +290,16 @@ class Problem:
         text, file, sets = self._inner.__reduce__()[1]
         return ("wearfem.Problem", text, file, tuple(map(tuple, sets)))
 
+    def __eq__(self, other: object) -> bool:
+        """Equal problems have the same text, file name and overrides (so a problem equals
+        its own pickle, and ``functools.lru_cache`` of a solve hits)."""
+        if not isinstance(other, Problem):
+            return NotImplemented
+        return self.__dask_tokenize__() == other.__dask_tokenize__()
+
+    def __hash__(self) -> int:
+        return hash(self.__dask_tokenize__())
+
     def __repr__(self) -> str:
         sets = ", ".join(f"{k}={v}" for k, v in self.overrides)
         return f"<wearfem.Problem {self.file!r}{' with ' + sets if sets else ''}>"
