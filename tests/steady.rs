@@ -592,3 +592,69 @@ fn a_run_at_its_steady_state_does_not_stop_on_a_degenerate_contact_solve() {
         );
     }
 }
+
+#[test]
+fn steady_state_and_run_with_b_0_1_and_the_load_at_one_end() {
+    // punch-b40's 16.666 MPa on its last 5 mm only, without friction, wear ∝ p^0.1. Theory:
+    // p⁺ = p⁻ (mirror images), and the period's wear 2 c p^0.1 is a rigid motion of the pinned
+    // plate, linear in x, wherever the punch touches, the line ≤ 0 where it does not. Near the
+    // zone's end p = L(x)¹⁰ falls to 1e-18 of the peak while it still wears a few % of the
+    // most: the steady iteration cycled there (period 3, exit 1), and the run's implicit step
+    // sent those points in and out of contact until its Newton limit (step 1713, exit 1).
+    let b = 0.1;
+    let p = problem(
+        "punch-b40",
+        &[
+            (
+                "normal = 16.666",
+                "normal = 16.666\nwindow = { x = [1125.0, 1130.0] }",
+            ),
+            ("friction = 0.25", "friction = 0.0"),
+            ("a = 1.0, b = 1.0 }", "a = 1.0, b = 0.1 }"),
+        ],
+    );
+    let (state, contact, _) = driver::steady(&p).unwrap();
+    assert_eq!(state.status, SteadyStatus::Solved);
+    let x: Vec<f64> = contact.points.x.iter().map(|q| q[0]).collect();
+    let wear: Vec<f64> = state.p_plus.iter().map(|p| 2.0 * p.powf(b)).collect();
+    assert_eq!(state.p_plus, state.p_minus);
+    let touching: Vec<usize> = (0..x.len()).filter(|&i| wear[i] > 0.0).collect();
+    let (i0, i1) = (touching[0], touching[touching.len() - 1]);
+    let largest = wear.iter().cloned().fold(0.0, f64::max);
+    let line = |i: usize| wear[i0] + (wear[i1] - wear[i0]) * (x[i] - x[i0]) / (x[i1] - x[i0]);
+    assert!(touching.len() > 10, "{} points touch", touching.len());
+    for i in 0..x.len() {
+        if wear[i] > 0.0 {
+            // Round-off of the Newton iteration: 1e-9 of the largest wear.
+            assert!(
+                (wear[i] - line(i)).abs() < 1e-9 * largest,
+                "x = {}: {} vs line {}",
+                x[i],
+                wear[i],
+                line(i)
+            );
+        } else {
+            assert!(
+                line(i) <= 1e-9 * largest,
+                "x = {}: out, line {}",
+                x[i],
+                line(i)
+            );
+        }
+    }
+    assert_shape_reproduces_pressures(&state, &contact, "b = 0.1, load at the end");
+    // The run of 6000 steps reaches that state (its own check, against the same solve).
+    let wear_run = run(&p, Some(6000));
+    let h = &wear_run.history;
+    assert!(h.stopped.is_none(), "stopped: {:?}", h.stopped);
+    let peak = state.p_plus.iter().cloned().fold(0.0, f64::max);
+    let worst = h
+        .p_plus
+        .iter()
+        .zip(&state.p_plus)
+        .map(|(a, e)| (a - e).abs())
+        .fold(0.0, f64::max);
+    // The run approaches slowly (its zone still grows a point at a time): 0.5 % of the peak
+    // after 6000 steps; 1 % is the program's own "at the steady state".
+    assert!(worst < 0.01 * peak, "{worst} of {peak}");
+}

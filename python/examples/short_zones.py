@@ -7,7 +7,7 @@ punch-b40 (Example 1, pin 40 mm up) with its 16.666 MPa on only part of its top:
 must agree. Prints one line per problem and the counts (docs/validation.md, "Session of
 2026-11-25"). Uses only the command line, so that two builds can be compared:
 
-    python3 python/examples/short_zones.py target/release/wearfem [OLD_BINARY]
+    python3 python/examples/short_zones.py target/release/wearfem [OLD_BINARY] [--small-b]
 
 About 4 minutes on 2 cores.
 """
@@ -21,8 +21,8 @@ import tempfile
 from pathlib import Path
 
 
-def problems(base):
-    """(name, problem text) of the 135 variants."""
+def problems(base, small_b=False):
+    """(name, problem text) of the 135 variants (with `small_b`, the 69 of small_exponents)."""
     def variant(window, mu, b):
         return (
             base.replace(
@@ -33,6 +33,9 @@ def problems(base):
             .replace("a = 1.0, b = 1.0 }", f"a = 1.0, b = {b} }}")
         )
 
+    if small_b:
+        yield from small_exponents(variant)
+        return
     for w in [2.5, 5, 7.5, 10, 15, 20, 30, 45, 60]:
         for mu in ["0.0", "0.01", "0.02", "0.05", "0.1", "0.2", "0.25"]:
             yield f"L-{w}-{mu}-1.0", variant(f"[1070.0, {1070 + w}]", mu, "1.0")
@@ -43,7 +46,20 @@ def problems(base):
         yield f"{side}-{w}-{mu}-{b}", variant(window, mu, b)
 
 
-def main(new, old=None):
+def small_exponents(variant):
+    """Wear laws with b < 1 (docs/validation.md, "wear laws with b < 1"): the first w mm with
+    b = 0.3 (15 problems), the last or middle w mm with b = 0.1, 0.3, 0.7 (54)."""
+    for w in [2.5, 5, 10, 20, 45]:
+        for mu in ["0.0", "0.05", "0.2"]:
+            yield f"L-{w}-{mu}-0.3", variant(f"[1070.0, {1070 + w}]", mu, "0.3")
+    for side, w, mu, b in itertools.product(
+        ["R", "M"], [5, 10, 20], ["0.0", "0.05", "0.1"], ["0.1", "0.3", "0.7"]
+    ):
+        window = f"[{1130 - w}.0, 1130.0]" if side == "R" else f"[{1100 - w / 2}, {1100 + w / 2}]"
+        yield f"{side}-{w}-{mu}-{b}", variant(window, mu, b)
+
+
+def main(new, old=None, small_b=False):
     base = subprocess.run(
         [new, "examples", "show", "punch-b40"], capture_output=True, text=True, check=True
     ).stdout
@@ -52,7 +68,7 @@ def main(new, old=None):
     counts = dict(problems=0, run_steady=0, new_solved=0, old_solved=0, worst=0.0)
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        for name, text in problems(base):
+        for name, text in problems(base, small_b):
             path = tmp / f"{name}.toml"
             path.write_text(text)
 
@@ -93,4 +109,5 @@ def main(new, old=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main(*sys.argv[1:3]))
+    args = [a for a in sys.argv[1:] if a != "--small-b"]
+    sys.exit(main(*args[:2], small_b="--small-b" in sys.argv))

@@ -27,11 +27,6 @@ pub fn is_concave(terms: &[(f64, f64)]) -> bool {
     wearing().all(|t| t.1 <= 1.0) && wearing().any(|t| t.1 < 1.0)
 }
 
-/// Below this fraction of the reference pressure a concave law's tangent is not used: its
-/// slope p^(b−1) grows without bound (b = 0.05 at 1e-300 MPa overflows), and a pressure that
-/// small is a point just brought into contact, for which the secant to the reference serves.
-const TANGENT_FLOOR: f64 = 1e-12;
-
 /// The slope dW/dp (mm/MPa) Newton's method linearises W with at `p` (MPa).
 ///
 /// - b = 1: the law's own slope.
@@ -39,14 +34,25 @@ const TANGENT_FLOOR: f64 = 1e-12;
 /// - b > 1: the tangent.
 /// - b < 1 in a law that also has b > 1 terms: the secant W(p)/p, which stays positive where
 ///   the tangent in p overshoots (linear convergence at about 1 − b).
-/// - At p = 0 (for a concave law below [`TANGENT_FLOOR`] of `reference`) the secant to the
-///   reference pressure `reference` (MPa, a mean contact pressure): a point just brought into
-///   contact keeps a wear row that depends on its own pressure, with a slope of the right
-///   size. `zero_slope_above_1` gives b > 1 terms a zero slope there instead (their tangent).
+/// - At p = 0 the secant to the reference pressure `reference` (MPa, a mean contact
+///   pressure): a point just brought into contact keeps a wear row that depends on its own
+///   pressure, with a slope of the right size. `zero_slope_above_1` gives b > 1 terms a zero
+///   slope there instead (their tangent). So does a concave law where its tangent overflows
+///   (p^(b−1) beyond 1e308: only at subnormal pressures).
+///
+/// No floor is put under p for the tangent: at a zone's end with b = 0.1 pressures of 1e-18 of
+/// the mean wear a few % of the most, and a secant to the mean there (as below a floor of
+/// 1e-12 of it) asked for pressures of −1e-10 where the wear needed was positive.
 pub fn newton_slope(terms: &[(f64, f64)], p: f64, reference: f64, zero_slope_above_1: bool) -> f64 {
     let p = p.max(0.0);
     let concave = is_concave(terms);
-    let from_reference = p == 0.0 || (concave && p < TANGENT_FLOOR * reference);
+    if concave && p > 0.0 {
+        let tangent: f64 = terms.iter().map(|&(c, b)| c * b * p.powf(b - 1.0)).sum();
+        if tangent.is_finite() {
+            return tangent;
+        }
+    }
+    let from_reference = p == 0.0 || concave;
     terms
         .iter()
         .map(|&(c, b)| {
@@ -127,17 +133,17 @@ pub fn pressure_of_wear(terms: &[(f64, f64)], w: f64) -> f64 {
 ///   it at a rate of 1 − b.
 /// - Where the model's wear is not positive, `p` itself (then ≤ 0: the point leaves the
 ///   contact).
-/// - Other laws, and a linearisation at p̂ = 0 or below [`TANGENT_FLOOR`] of `reference`
-///   (there the slope is the secant to the reference pressure, and W⁻¹ of its model would
-///   send a small p to a vanishing one), keep `p`.
+/// - Other laws, and a linearisation at p̂ = 0 or with a slope that is not finite (there the
+///   slope is the secant to the reference pressure, and W⁻¹ of its model would send a small p
+///   to a vanishing one), keep `p`.
 ///
 /// The step in w overshoots where the solution is far above p̂: W⁻¹ of the model's wear can
 /// then be orders of magnitude too large. The new pressure is therefore kept within `GROWTH`
 /// times the larger of p̂ and p, which the quadratic convergence near the solution never
 /// reaches.
-pub fn step_in_wear(terms: &[(f64, f64)], p_hat: f64, slope: f64, p: f64, reference: f64) -> f64 {
+pub fn step_in_wear(terms: &[(f64, f64)], p_hat: f64, slope: f64, p: f64) -> f64 {
     const GROWTH: f64 = 4.0;
-    if !is_concave(terms) || p_hat <= 0.0 || p_hat < TANGENT_FLOOR * reference {
+    if !is_concave(terms) || p_hat <= 0.0 || !slope.is_finite() {
         return p;
     }
     let model = half_period_wear(terms, p_hat) + slope * (p - p_hat);
@@ -145,6 +151,58 @@ pub fn step_in_wear(terms: &[(f64, f64)], p_hat: f64, slope: f64, p: f64, refere
         return p;
     }
     pressure_of_wear(terms, model).min(GROWTH * p_hat.max(p))
+}
+
+/// The next linearisation point of a point in contact in the run's implicit step, for a
+/// concave law: the pressure that satisfies the point's own gap equation with the linear
+/// model's right-hand side, e p + W(p) = e p_lin + W(p̂) + s (p_lin − p̂), where e (mm/MPa) is
+/// the point's own elastic flexibility (its pressure's normal approach) over the step factor k.
+///
+/// Where the wear outweighs the elastic part (e p ≪ W(p), the end of a zone with b ≪ 1) this
+/// is the step in the wear ([`step_in_wear`]), which lands on the wear the point needs; where
+/// the elastic part outweighs the wear, it is p_lin itself, which the step in the wear would
+/// instead raise to the power 1/b (b = 0.1: the edge points of a short zone oscillated over
+/// two decades). `p` > 0 and `p_hat` > 0 (MPa), `slope` the one linearised with.
+pub fn balanced_step(terms: &[(f64, f64)], p_hat: f64, slope: f64, p: f64, elastic: f64) -> f64 {
+    if !is_concave(terms)
+        || p_hat <= 0.0
+        || p <= 0.0
+        || !slope.is_finite()
+        || elastic.is_nan()
+        || elastic < 0.0
+    {
+        return p;
+    }
+    let target = elastic * p + half_period_wear(terms, p_hat) + slope * (p - p_hat);
+    // f(q) = e q + W(q) − target is increasing and concave: Newton's method from a point where
+    // f ≤ 0 rises monotonically to the root without passing it.
+    let f = |q: f64| elastic * q + half_period_wear(terms, q) - target;
+    let mut q = p;
+    let mut halvings = 0;
+    while f(q) > 0.0 {
+        q *= 0.5;
+        halvings += 1;
+        if halvings > 1100 {
+            return p;
+        }
+    }
+    for _ in 0..100 {
+        let derivative = elastic
+            + terms
+                .iter()
+                .map(|&(c, b)| c * b * q.powf(b - 1.0))
+                .sum::<f64>();
+        let next = q - f(q) / derivative;
+        if next.is_nan() || next <= q || !next.is_finite() {
+            break;
+        }
+        let converged = next - q <= 4.0 * f64::EPSILON * next;
+        q = next;
+        if converged {
+            break;
+        }
+    }
+    q
 }
 
 #[cfg(test)]
@@ -177,9 +235,30 @@ mod tests {
         for p_hat in [9.0, 11.0, 30.0] {
             let slope = newton_slope(&terms, p_hat, 1.0, false);
             let p_linear = p_hat + (target - half_period_wear(&terms, p_hat)) / slope;
-            let next = step_in_wear(&terms, p_hat, slope, p_linear, 1.0);
+            let next = step_in_wear(&terms, p_hat, slope, p_linear);
             assert!((next - 10.0).abs() < 1e-12 * 10.0, "{p_hat}: {next}");
         }
+    }
+
+    #[test]
+    fn the_balanced_step_is_the_step_in_the_wear_or_the_pressure_at_its_limits() {
+        let terms = [(1e-3, 0.1)];
+        let (p_hat, p) = (2.0, 3.0);
+        let slope = newton_slope(&terms, p_hat, 1.0, false);
+        let in_wear = step_in_wear(&terms, p_hat, slope, p);
+        let rigid_bodies = balanced_step(&terms, p_hat, slope, p, 0.0);
+        assert!(
+            (rigid_bodies - in_wear).abs() < 1e-12 * in_wear,
+            "{rigid_bodies} vs {in_wear}"
+        );
+        let stiff_wear = balanced_step(&terms, p_hat, slope, p, 1e6);
+        assert!((stiff_wear - p).abs() < 1e-6 * p, "{stiff_wear} vs {p}");
+        // In between, the point's own equation holds.
+        let e = 1e-3;
+        let q = balanced_step(&terms, p_hat, slope, p, e);
+        let model = half_period_wear(&terms, p_hat) + slope * (p - p_hat);
+        let balance = e * q + half_period_wear(&terms, q) - (e * p + model);
+        assert!(balance.abs() < 1e-14 * (e * p + model), "{balance}");
     }
 
     #[test]

@@ -54,6 +54,9 @@ impl WearIntegrator {
         let mut ws = Workspace::new(n);
         ws.weight.copy_from_slice(&points.weight);
         ws.area = contact.areas();
+        for (i, own) in ws.own_flexibility.iter_mut().enumerate() {
+            *own = contact.a_nn[i * n + i] * ws.area[i];
+        }
         ws.sliding = self.laws.iter().map(|l| self.sliding(l.a)).collect();
         ws.terms = self.half_period_wear();
         let rigid = contact.rigid_gap_matrix();
@@ -504,8 +507,9 @@ impl WearIntegrator {
             }
             error = worst / largest.max(f64::MIN_POSITIVE);
             let concave = law::is_concave(&ws.terms);
+            let own_flexibility = &ws.own_flexibility;
             let points = ws.linearised_at.iter_mut().zip(pressure).zip(&ws.slope);
-            for (((at, &p), slope), chord) in points.zip(&mut ws.chord) {
+            for (i, (((at, &p), slope), chord)) in points.zip(&mut ws.chord).enumerate() {
                 // A point the contact solve left out is linearised at p = 0 (the step in the
                 // wear would give it the tangent's positive intercept instead). If a tangent
                 // sent it out, its pressure is near zero, where that intercept outweighs the
@@ -516,7 +520,7 @@ impl WearIntegrator {
                     *chord = true;
                 }
                 *at = if p > 0.0 {
-                    law::step_in_wear(&ws.terms, *at, *slope, p, reference)
+                    law::balanced_step(&ws.terms, *at, *slope, p, own_flexibility[i] / kf)
                 } else {
                     p
                 };

@@ -43,6 +43,9 @@ pub(super) struct Workspace {
     pub weight: Vec<f64>,
     /// Contact area w_i t of each point, mm².
     pub area: Vec<f64>,
+    /// Each point's own elastic flexibility: the normal approach per unit pressure at that
+    /// point, A_nn(i, i) w_i t, mm/MPa.
+    pub own_flexibility: Vec<f64>,
     /// Wear compliance of the implicit step, mm/N, and all zeros (no wear compliance).
     pub compliance: Vec<f64>,
     pub zero: Vec<f64>,
@@ -75,6 +78,7 @@ impl Workspace {
             terms: vec![],
             weight: vec![0.0; n],
             area: vec![0.0; n],
+            own_flexibility: vec![0.0; n],
             compliance: vec![0.0; n],
             zero: vec![0.0; n],
             slope: vec![0.0; n],

@@ -36,6 +36,9 @@ pub(super) struct Jacobian<'s, 'a> {
     /// For each point out of contact in every half, the half whose gap row stands in for its
     /// wear row (the closest one).
     pub closest: Vec<usize>,
+    /// Whether the reduced unknown of a point in contact in both halves is its wear in the
+    /// other half (a concave law, see [`Jacobian::pressures`]) rather than its pressure there.
+    pub in_wear: bool,
 }
 
 /// Storage kept from one Newton iteration to the next.
@@ -131,8 +134,18 @@ impl Jacobian<'_, '_> {
             if let Some(other) = (0..halves).find(|&h| h != pivot && self.active[h][j]) {
                 let q = p.points.len();
                 p.points.push(j);
-                p.kept[other].push((j, q, 1.0));
-                p.kept[pivot].push((j, q, -slope(other) / sp));
+                // For a concave law the unknown is the other half's wear s P, not P: at the end
+                // of a zone the pressures fall to 1e-20 of the peak (b = 0.1: p = L(x)¹⁰) and
+                // still wear a few % of the most, so a pressure solved to the round-off of the
+                // peak would decide contact there by noise; the wear is solved to its own.
+                let so = slope(other);
+                if self.in_wear && so > 0.0 && so.is_finite() {
+                    p.kept[other].push((j, q, so.recip()));
+                    p.kept[pivot].push((j, q, -sp.recip()));
+                } else {
+                    p.kept[other].push((j, q, 1.0));
+                    p.kept[pivot].push((j, q, -so / sp));
+                }
             }
         }
         Some(p)
@@ -417,27 +430,34 @@ mod tests {
             vec![true, true, false, true, true, false, false],
             vec![true, false, true, true, true, false, false],
         ];
-        let jacobian = Jacobian {
-            system: &s,
-            active: &active,
-            slope: vec![
-                (0..7).map(|i| 0.5 + 0.2 * i as f64).collect(),
-                (0..7).map(|i| 1.5 - 0.1 * i as f64).collect(),
-            ],
-            closest: vec![0, 0, 0, 0, 0, 1, 0],
-        };
-        let b: Vec<f64> = (0..s.size()).map(|r| (r as f64 * 0.7).sin()).collect();
-        let x = jacobian
-            .eliminate(&b, &mut UpdatedLu::default())
-            .expect("nonsingular");
-        let mut whole = DenseLu::default();
-        jacobian.write_dense(whole.storage(s.size()));
-        assert!(whole.factor_in_place());
-        let mut y = b.clone();
-        whole.solve_in_place(&mut y, &mut vec![0.0; s.size()]);
-        for (r, (a, c)) in x.iter().zip(&y).enumerate() {
-            assert!((a - c).abs() < 1e-12 * (1.0 + c.abs()), "{r}: {a} vs {c}");
+        // The reduced unknowns as pressures, and as wears (a concave law's choice): the same.
+        for in_wear in [false, true] {
+            let jacobian = Jacobian {
+                system: &s,
+                active: &active,
+                slope: vec![
+                    (0..7).map(|i| 0.5 + 0.2 * i as f64).collect(),
+                    (0..7).map(|i| 1.5 - 0.1 * i as f64).collect(),
+                ],
+                closest: vec![0, 0, 0, 0, 0, 1, 0],
+                in_wear,
+            };
+            let b: Vec<f64> = (0..s.size()).map(|r| (r as f64 * 0.7).sin()).collect();
+            let x = jacobian
+                .eliminate(&b, &mut UpdatedLu::default())
+                .expect("nonsingular");
+            let mut whole = DenseLu::default();
+            jacobian.write_dense(whole.storage(s.size()));
+            assert!(whole.factor_in_place());
+            let mut y = b.clone();
+            whole.solve_in_place(&mut y, &mut vec![0.0; s.size()]);
+            for (r, (a, c)) in x.iter().zip(&y).enumerate() {
+                assert!(
+                    (a - c).abs() < 1e-12 * (1.0 + c.abs()),
+                    "{in_wear} {r}: {a} vs {c}"
+                );
+            }
+            assert!(jacobian.accurate(&x, &b));
         }
-        assert!(jacobian.accurate(&x, &b));
     }
 }
