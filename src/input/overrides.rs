@@ -242,8 +242,12 @@ fn apply(table: &mut toml::Table, o: &Override) -> Result<(), String> {
     };
     let mut here = TableOrValue::Table(table);
     let mut walked = String::new();
-    for segment in inner {
-        here = here.step(segment, &mut walked, true)?;
+    for (j, segment) in inner.iter().enumerate() {
+        // A missing key is made a table, unless an index follows: an array cannot be made
+        // entry by entry (`wear.extrapolation[1].k` on a file without the schedule was
+        // answered "is a table, not an array").
+        let before_index = matches!(o.path.get(j + 1), Some(Segment::Index(_)));
+        here = here.step(segment, &mut walked, !before_index)?;
     }
     here.set(last, o.value.clone(), &walked)
 }
@@ -261,15 +265,21 @@ impl<'a> TableOrValue<'a> {
         create: bool,
     ) -> Result<TableOrValue<'a>, String> {
         let name = walked.clone();
+        let missing = |k: &str| {
+            let key = if name.is_empty() {
+                k.to_string()
+            } else {
+                format!("{name}.{k}")
+            };
+            format!("{key} is not in the file, so it has no entries to index: give the whole array (--set '{key}=[…]')")
+        };
         let next = match (self, segment) {
-            (TableOrValue::Table(t), Segment::Key(k)) => {
-                if create && !t.contains_key(k) {
-                    t.insert(k.clone(), toml::Value::Table(Default::default()));
-                }
-                t.get_mut(k).expect("present or just inserted")
-            }
-            (TableOrValue::Value(toml::Value::Table(t)), Segment::Key(k)) => {
-                if create && !t.contains_key(k) {
+            (TableOrValue::Table(t), Segment::Key(k))
+            | (TableOrValue::Value(toml::Value::Table(t)), Segment::Key(k)) => {
+                if !t.contains_key(k) {
+                    if !create {
+                        return Err(missing(k));
+                    }
                     t.insert(k.clone(), toml::Value::Table(Default::default()));
                 }
                 t.get_mut(k).expect("present or just inserted")

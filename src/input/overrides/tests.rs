@@ -226,6 +226,22 @@ fn overrides_may_supply_what_the_file_lacks() {
 }
 
 #[test]
+fn an_index_into_a_key_the_file_lacks_asks_for_the_whole_array() {
+    // `wear.extrapolation[1].k` on a file without a schedule was answered "the file is a
+    // table, not an array" (the missing key had been made a table on the way).
+    let e = with(&["wear.extrapolation[1].k=5"]).unwrap_err();
+    assert_eq!(e.key, "wear.extrapolation[1].k");
+    assert!(
+        e.message.contains("wear.extrapolation is not in the file")
+            && e.message.contains("--set 'wear.extrapolation=[…]'"),
+        "{}",
+        e.message
+    );
+    // A missing table is still made, as before.
+    assert!(with(&["wear.adaptive.method=\"bdf2\""]).is_ok());
+}
+
+#[test]
 fn lines_of_a_multi_line_value_are_not_headers() {
     // Red team 21: after a `corners` list written one point per line, a syntax error (which
     // the span reading cannot parse) was named `1000.0, 100.0.material`.
