@@ -20,7 +20,7 @@ export CARGO_TARGET_DIR="$root/target"
 python3 -m venv "$venv"
 py="$venv/bin/python"
 "$py" -m pip install --quiet --upgrade pip
-"$py" -m pip install --quiet "maturin>=1.5,<2" numpy pytest "dask[distributed]" pandas
+"$py" -m pip install --quiet "maturin>=1.5,<2" numpy pytest "dask[distributed]" pandas mypy
 
 export WEARFEM_BIN=${WEARFEM_BIN:-$root/target/release/wearfem}
 if [ ! -x "$WEARFEM_BIN" ]; then

@@ -6,6 +6,8 @@ from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
+from ._wearfem import Problem as _Problem
+
 __all__ = [
     "Problem",
     "WearfemError",
@@ -41,6 +43,7 @@ class WearfemWarning(UserWarning):
 
 class ElasticResult:
     summary: Dict[str, Any]
+    def __init__(self, summary: Dict[str, Any]) -> None: ...
     status: str
     dofs: int
     condensed_dofs: int
@@ -51,6 +54,7 @@ class ElasticResult:
 
 class ContactResult:
     summary: Dict[str, Any]
+    def __init__(self, summary: Dict[str, Any]) -> None: ...
     warnings: List[str]  # the command line's warning lines
     x: FloatArray  # mm
     z: FloatArray  # mm
@@ -65,6 +69,7 @@ class ContactResult:
 
 class SteadyResult:
     summary: Dict[str, Any]
+    def __init__(self, summary: Dict[str, Any]) -> None: ...
     warnings: List[str]  # the command line's warning lines
     x: FloatArray  # mm
     # The values are None when the solve did not converge (converged False): nothing of the
@@ -85,6 +90,7 @@ class SteadyResult:
 
 class RunResult:
     summary: Dict[str, Any]
+    def __init__(self, summary: Dict[str, Any]) -> None: ...
     warnings: List[str]  # the command line's warning lines
     history: Dict[str, np.ndarray]  # one entry per step
     x: Optional[FloatArray]  # mm
@@ -107,6 +113,8 @@ class RunResult:
     def __getitem__(self, key: str) -> Any: ...
 
 class Problem:
+    def __init__(self, inner: _Problem) -> None: ...
+    def __dask_tokenize__(self) -> Tuple[str, str, str, Tuple[Tuple[str, str], ...]]: ...
     def __eq__(self, other: object) -> bool: ...
     def __hash__(self) -> int: ...
     @classmethod
