@@ -64,7 +64,7 @@ pub fn newton_slope(terms: &[(f64, f64)], p: f64, reference: f64, zero_slope_abo
                 } else {
                     c * reference.powf(b - 1.0)
                 }
-            } else if b > 1.0 || concave {
+            } else if b > 1.0 {
                 c * b * p.powf(b - 1.0)
             } else {
                 c * p.powf(b - 1.0)
@@ -91,16 +91,16 @@ pub fn pressure_of_wear(terms: &[(f64, f64)], w: f64) -> f64 {
     if w <= 0.0 {
         return 0.0;
     }
-    let wearing: Vec<(f64, f64)> = terms.iter().copied().filter(|t| t.0 > 0.0).collect();
-    if let [(c, b)] = wearing[..] {
+    // No allocation: this runs per point and iteration.
+    let wearing = || terms.iter().copied().filter(|t| t.0 > 0.0);
+    if let (Some((c, b)), 1) = (wearing().next(), wearing().count()) {
         return (w / c).powf(b.recip());
     }
     // W reaches w before any one of its terms does, i.e. below the least (w/c)^(1/b); the
     // root is found by bisection (in ln p once the lower end is positive), which needs no
     // safeguards and costs some 60 evaluations at points where it is used at all.
-    let mut high = wearing
-        .iter()
-        .map(|&(c, b)| (w / c).powf(b.recip()))
+    let mut high = wearing()
+        .map(|(c, b)| (w / c).powf(b.recip()))
         .fold(f64::INFINITY, f64::min);
     let mut low = 0.0f64;
     for _ in 0..200 {
@@ -109,7 +109,7 @@ pub fn pressure_of_wear(terms: &[(f64, f64)], w: f64) -> f64 {
         } else {
             0.5 * high
         };
-        if half_period_wear(&wearing, mid) < w {
+        if half_period_wear(terms, mid) < w {
             low = mid;
         } else {
             high = mid;
@@ -125,12 +125,10 @@ pub fn pressure_of_wear(terms: &[(f64, f64)], w: f64) -> f64 {
 /// `slope` (mm/MPa), the linear model W(p̂) + s (p − p̂) gave the pressure `p` (MPa). The next
 /// pressure is the one that has the model's wear on the law, W⁻¹(W(p̂) + s (p − p̂)).
 ///
-/// - With the tangent ([`newton_slope`]) this is Newton's method in the wear. The new pressure
-///   is ≥ p (the tangent lies above a concave law) and can be positive where p is not.
-/// - With the chord ([`chord_slope`]) the model's wear is s p, and at a point whose wear
-///   outweighs its elastic part (p ≪ the mean, as near the end of a zone) it is the wear the
-///   point needs: W⁻¹ of it is then nearly the solution, where the chord alone would approach
-///   it at a rate of 1 − b.
+/// - With the tangent ([`newton_slope`]) this is Newton's method in the wear (the steady
+///   solver's step, whose shape is free so that no elastic part of a point's own gap equation
+///   holds it back; the run's step is [`balanced_step`]). The new pressure is ≥ p (the
+///   tangent lies above a concave law) and can be positive where p is not.
 /// - Where the model's wear is not positive, `p` itself (then ≤ 0: the point leaves the
 ///   contact).
 /// - Other laws, and a linearisation at p̂ = 0 or with a slope that is not finite (there the
@@ -177,6 +175,8 @@ pub fn balanced_step(terms: &[(f64, f64)], p_hat: f64, slope: f64, p: f64, elast
     // f(q) = e q + W(q) − target is increasing and concave: Newton's method from a point where
     // f ≤ 0 rises monotonically to the root without passing it.
     let f = |q: f64| elastic * q + half_period_wear(terms, q) - target;
+    // Halving reaches a point with f ≤ 0 (f(0) = −target < 0) within the 1100 halvings that
+    // take any finite p to zero.
     let mut q = p;
     let mut halvings = 0;
     while f(q) > 0.0 {
