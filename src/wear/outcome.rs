@@ -61,6 +61,10 @@ pub enum StopReason {
         criterion: f64,
         /// `wear.tolerance`, percent.
         tolerance: f64,
+        /// The step's extrapolation factor k.
+        factor: usize,
+        /// Whether the error stopped falling (a cycle: more iterations would not help).
+        stalled: bool,
     },
     /// The wear stopped being finite (β̃ or the load far out of range).
     NonFiniteWear,
@@ -85,10 +89,16 @@ impl std::fmt::Display for StopReason {
             StopReason::UnconvergedStep {
                 criterion,
                 tolerance,
-            } => write!(
-                f,
-                "the implicit step's iteration did not converge (linearisation error {criterion:.3e} % of the largest wear after wear.max_iterations iterations, tolerance {tolerance:e} %; for b far from 1 Newton's method may need more: raise wear.max_iterations, or lower the step factor k)"
-            ),
+                factor,
+                stalled,
+            } => {
+                write!(f, "the implicit step's iteration did not converge (linearisation error {criterion:.3e} % of the largest wear after wear.max_iterations iterations, tolerance {tolerance:e} %")?;
+                match (stalled, factor) {
+                    (false, _) => write!(f, "; for b far from 1 Newton's method may need more: raise wear.max_iterations, or lower the step factor k)"),
+                    (true, k) if *k > 1 => write!(f, "; its error stopped falling, so more iterations will not help: lower the step factor k, {k} here)"),
+                    (true, _) => write!(f, "; its error stopped falling and the step factor k is already 1: for b far below 1 on stiff bodies or short zones the step may find no pressure; see docs/problem-files.md, [wear])"),
+                }
+            }
             StopReason::NonFiniteWear => write!(f, "the wear stopped being finite"),
             StopReason::SteadyState => write!(f, "the steady state was reached"),
             StopReason::Interrupted => write!(f, "the run was interrupted by its caller"),

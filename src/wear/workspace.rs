@@ -30,6 +30,9 @@ pub(super) struct StepOutcome {
     pub criterion: f64,
     pub converged: bool,
     pub oscillating: bool,
+    /// An implicit step that did not converge and whose error stopped falling in the second
+    /// half of its iterations: more iterations would not help.
+    pub stalled: bool,
 }
 
 /// Buffers of one run, sized once so that the step loop does not allocate.
