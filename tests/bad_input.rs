@@ -701,6 +701,39 @@ fn an_implicit_step_that_misses_its_tolerance_stops_the_run() {
     let history = std::fs::read_to_string(out.join("history.csv")).unwrap();
     assert_eq!(history.lines().count(), 1, "steps were written: {history}");
     assert!(!out.join("final.csv").exists());
+    // One iteration cannot tell a cycle from slow progress: more iterations are advised.
+    assert!(err.contains("raise wear.max_iterations"), "{err}");
+}
+
+#[test]
+fn an_implicit_step_that_cycles_is_not_told_to_iterate_longer() {
+    // Red team 26: b = 0.1, the load on the punch's last 5 mm, bodies 1000 times stiffer: at
+    // step 9 (k = 1) the error stays at 48 % after 50, 1000 and 10 000 iterations, and the
+    // message advised raising wear.max_iterations or lowering k.
+    let text = wearfem::examples::example("punch-b40").unwrap();
+    let (code, err) = run_cli(
+        "run",
+        &[
+            "--steps",
+            "20",
+            "--set",
+            "wear.body1.b=0.1",
+            "--set",
+            "contact.friction=0",
+            "--set",
+            "bodies[0].tractions[0].window={ x = [1125.0, 1130.0] }",
+            "--set",
+            "materials.steel.young=2e8",
+            "--set",
+            "materials.composite.young=1.3e8",
+        ],
+        text,
+        "cycling_step",
+    );
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("its error stopped falling"), "{err}");
+    assert!(err.contains("k is already 1"), "{err}");
+    assert!(!err.contains("raise wear.max_iterations"), "{err}");
 }
 
 #[test]
