@@ -658,3 +658,44 @@ fn steady_state_and_run_with_b_0_1_and_the_load_at_one_end() {
     // after 6000 steps; 1 % is the program's own "at the steady state".
     assert!(worst < 0.01 * peak, "{worst} of {peak}");
 }
+
+#[test]
+fn a_concave_law_with_a_linear_term_runs_to_its_steady_state() {
+    // Red team 25: body 1 with b = 0.2 and body 2 with b = 1 (a concave law with a linear
+    // term) on the translating punch: the first step in the wear needed 125 Newton iterations
+    // at step 39 and stopped the run. Theory for the steady state (translation only, no
+    // rotation): the period's wear Σ_bodies c (p⁺ᵇ + p⁻ᵇ) is uniform over the contact, which
+    // the steady solve meets to round-off, and the run of 1700 steps must reach it (the
+    // program's own 1 % of the peak; it ends 0.04 % away).
+    use wearfem::steady_check::SteadyCheck;
+    let p = problem(
+        "punch-a",
+        &[(
+            "body1 = { beta = 3.9269908169872414e-8, a = 1.0, b = 1.0 }",
+            "body1 = { beta = 3.9e-8, a = 1.0, b = 0.2 }\nbody2 = { beta = 3.9e-8, a = 1.0, b = 1.0 }",
+        )],
+    );
+    let (state, _, _) = driver::steady(&p).unwrap();
+    assert_eq!(state.status, SteadyStatus::Solved);
+    // Both bodies share the sliding integral (a = 1), so c₁ : c₂ = 1 : 1 here.
+    let wear: Vec<f64> = state
+        .p_plus
+        .iter()
+        .zip(&state.p_minus)
+        .map(|(a, b)| a.powf(0.2) + b.powf(0.2) + a + b)
+        .collect();
+    let largest = wear.iter().cloned().fold(0.0, f64::max);
+    for w in &wear {
+        assert!((w - wear[0]).abs() < 1e-9 * largest, "{w} vs {}", wear[0]);
+    }
+    let wear_run = run(&p, None);
+    assert!(
+        wear_run.history.stopped.is_none(),
+        "{:?}",
+        wear_run.history.stopped
+    );
+    match wear_run.steady_check {
+        SteadyCheck::Compared { pressure, .. } => assert!(pressure < 0.01, "{pressure}"),
+        other => panic!("{other}"),
+    }
+}
