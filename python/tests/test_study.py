@@ -272,3 +272,13 @@ def test_an_axis_the_job_does_not_read_is_warned_about(punch):
     with pytest.warns(wearfem.WearfemWarning, match="does not read wear.scheme"):
         table = wearfem.study(punch, {"wear.scheme": ["implicit", "fixed_point"]})
     assert list(table["peak_p_plus"])[0] == list(table["peak_p_plus"])[1]
+
+
+def test_a_variant_refused_when_solved_is_named():
+    """A check that needs the contact (a probe on the contact edge) comes when the variant is
+    solved; the error names the variant (red team 24: it named only the key)."""
+    p = wearfem.Problem.builtin("punch-b40")
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.study(p, {"probes.M.at": [[1070.0, 100.0], [1100.0, 50.0]]})
+    assert e.value.key == "probes.M.at"
+    assert "in the study's variant probes.M.at=[1100" in e.value.message, e.value.message

@@ -50,7 +50,15 @@ def solve_variant(problem, job: str = "steady") -> Dict[str, Any]:
 
     A variant that did not converge (``converged`` False) has NaN for every value: nothing of
     a failed or non-converged solve is a result (``wearfem sweep`` leaves those cells empty)."""
-    row = json.loads(problem._inner._study_row(job))
+    from . import WearfemError  # the package imports this module
+
+    try:
+        row = json.loads(problem._inner._study_row(job))
+    except WearfemError as e:
+        # A check that needs the contact itself (a probe on the contact edge) comes only
+        # now: say which variant of the study it refused (red team 24).
+        variant = ", ".join(f"{k}={v}" for k, v in problem.overrides)
+        raise WearfemError(e.file, e.key, f"{e.message} (in the study's variant {variant})") from None
     out: Dict[str, Any] = {
         "status": row["status"],
         "converged": row["converged"],
