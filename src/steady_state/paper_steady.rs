@@ -76,8 +76,10 @@ pub struct MethodSettings {
     pub tolerance: f64,
     /// Spline sensitivities (default: finite differences, as the paper).
     pub sensitivities: Sensitivities,
-    /// Finite-difference step Δs of eq. 46, mm (default 0.00002, the paper's).
-    pub fd_step: f64,
+    /// Finite-difference step Δs of eq. 46, mm (default `None`: a tenth of the paper's
+    /// 0.00002 mm on Example 1, in proportion to the problem's deflection under its mean
+    /// pressure, see [`crate::spline_method::EXAMPLE_1_DEFLECTION`]).
+    pub fd_step: Option<f64>,
     /// Spline method: how many times every interval between the paper's 17 spline points is
     /// bisected (default 0, the paper's 17 points; 1 gives 33, 2 gives 65), for the study of
     /// the spline's resolution. Capped so that the spline has no more points than the contact
@@ -94,7 +96,7 @@ impl Default for MethodSettings {
             max_iterations: 5000,
             tolerance: 1e-3,
             sensitivities: Sensitivities::FiniteDifference,
-            fd_step: 2e-5,
+            fd_step: None,
             spline_refinement: 0,
         }
     }
@@ -201,7 +203,10 @@ pub(crate) struct Evaluator<'a> {
 }
 
 impl<'a> Evaluator<'a> {
-    fn new(contact: &'a CondensedContact, terms: &[(f64, f64)]) -> Result<Self, MethodError> {
+    pub(crate) fn new(
+        contact: &'a CondensedContact,
+        terms: &[(f64, f64)],
+    ) -> Result<Self, MethodError> {
         if terms.iter().any(|t| t.1 != 1.0) {
             return Err(MethodError::Unsupported("b ≠ 1".into()));
         }
