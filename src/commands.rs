@@ -309,7 +309,9 @@ pub(crate) fn steady_by(
     for w in &warnings {
         eprintln!("{w}");
     }
-    let last = outcome.history.last();
+    // The written state's δw, as in summary.json (the last history record of the penalty
+    // method is of the shape before that period's corrections).
+    let max_delta_w = outcome.delta_w.iter().cloned().fold(0.0, f64::max);
     println!(
         "{}: steady state by the {} method: {} iterations, {} contact solves, {:.4} s (+{:.4} s set-up); eq. 49 residual {:.2e}, max δw {:.2e} mm; {} → {}",
         p.file,
@@ -319,7 +321,7 @@ pub(crate) fn steady_by(
         outcome.seconds,
         setup,
         outcome.residual,
-        last.map_or(f64::NAN, |r| r.max_delta_w),
+        max_delta_w,
         outcome
             .distance_from_exact
             .map_or(

@@ -509,7 +509,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let (state, contact, seconds) = driver::steady(&p)?;
             if state.status != wearfem::steady::SteadyStatus::Solved {
                 // Nothing from an unconverged iteration is written as a result.
-                let hint = wearfem::steady::failure_hint(state.sliding, &contact);
+                let hint = wearfem::steady::failure_hint(&state, &contact);
                 if let Some(why) = driver::unbalanced_loads(&p, &contact) {
                     // No steady state and no run either: say why, not "run instead".
                     return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written, because {why}", state.status, state.wear_residual)));

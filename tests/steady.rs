@@ -699,3 +699,63 @@ fn a_concave_law_with_a_linear_term_runs_to_its_steady_state() {
         other => panic!("{other}"),
     }
 }
+
+#[test]
+fn a_nearly_frictionless_state_is_followed_from_the_frictionless_one() {
+    // The b = 0.1 end load of the test above with μ = 1e-12: friction enters the equations as
+    // μ times bounded terms, so the state differs from the frictionless one by O(μ) (measured
+    // 1e-11 of the peak; 1e-9 leaves the conditioning a factor 100). Solved as two halves from
+    // a uniform start, round-off parted the halves' zone ends and it failed; it is now walked
+    // to from the frictionless state, solved as one half.
+    let end_load = |mu: &str| {
+        let p = problem(
+            "punch-b40",
+            &[
+                (
+                    "normal = 16.666",
+                    "normal = 16.666\nwindow = { x = [1125.0, 1130.0] }",
+                ),
+                ("friction = 0.25", mu),
+                ("a = 1.0, b = 1.0 }", "a = 1.0, b = 0.1 }"),
+            ],
+        );
+        driver::steady(&p).unwrap().0
+    };
+    let frictionless = end_load("friction = 0.0");
+    let nearly = end_load("friction = 1e-12");
+    assert_eq!(nearly.status, SteadyStatus::Solved);
+    let peak = frictionless.p_plus.iter().cloned().fold(0.0, f64::max);
+    for (half, reference) in [
+        (&nearly.p_plus, &frictionless.p_plus),
+        (&nearly.p_minus, &frictionless.p_minus),
+    ] {
+        for (p, q) in half.iter().zip(reference) {
+            assert!((p - q).abs() < 1e-9 * peak, "{p} vs {q}");
+        }
+    }
+}
+
+#[test]
+fn a_failed_continuation_in_friction_says_how_far_it_came() {
+    // Load variant 3 without its second window and μ = 0.25: the friction moment separates
+    // the half cycles' zones (the test of eq. 19 with lift-off above), so no state of this
+    // form exists. The message says up to which μ the frictionless state was followed, and
+    // that claim holds: the problem solves at that μ.
+    let variant = |mu: &str| {
+        problem(
+            "punch-b40-variant3",
+            &[("normal = 12.5", "normal = 0.0"), ("friction = 0.25", mu)],
+        )
+    };
+    let (state, contact, _) = driver::steady(&variant("friction = 0.25")).unwrap();
+    assert_ne!(state.status, SteadyStatus::Solved);
+    let reached = state.friction_reached.expect("the continuation ran");
+    assert!(reached > 0.0 && reached < 0.25, "{reached}");
+    let hint = wearfem::steady::failure_hint(&state, &contact);
+    assert!(
+        hint.contains(&format!("followed up to μ = {reached:.3e}")),
+        "{hint}"
+    );
+    let (there, _, _) = driver::steady(&variant(&format!("friction = {reached}"))).unwrap();
+    assert_eq!(there.status, SteadyStatus::Solved, "μ = {reached}");
+}

@@ -437,8 +437,14 @@ pub fn steady_by(
             )
             .into());
     }
+    self::method(problem)?;
+    direction(problem)?;
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
+    // The same checks as the exact method's (red team 28: a probe off the contact edge or
+    // `shape_zero_at` outside it passed in silence with the §6 methods).
+    check_contact_probes(problem, &contact)?;
+    check_shape_zero(problem, &contact)?;
     let setup = start.elapsed().as_secs_f64();
     let most = crate::spline_method::max_refinement(contact.len());
     if method == crate::paper_steady::SteadyMethod::Spline && settings.spline_refinement > most {

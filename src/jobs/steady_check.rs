@@ -126,7 +126,7 @@ pub fn check(
         return SteadyCheck::Unavailable(format!(
             "the steady solve ended with {:?} ({})",
             state.status,
-            crate::steady::failure_hint(sliding, contact)
+            crate::steady::failure_hint(&state, contact)
         ));
     }
     let pairs: Vec<(&[f64], &[f64])> = if integrator.is_monotonic() {

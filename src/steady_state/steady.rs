@@ -24,7 +24,6 @@ use crate::wear::law;
 mod continuation;
 mod starts;
 mod step;
-use starts::unworn_pressures;
 use step::{Jacobian, Workspace};
 
 /// Settings of the steady-state solve.
@@ -117,6 +116,10 @@ pub struct SteadyState {
     /// Largest relative residual of the wear compatibility at the end (at points out of
     /// contact throughout: how far the rigid wear would close their gap).
     pub wear_residual: f64,
+    /// When the iteration with friction failed but the frictionless steady state was found:
+    /// the friction coefficient up to which it was followed by continuation in μ (0: not
+    /// even 1/64 of the problem's); `None` otherwise.
+    pub friction_reached: Option<f64>,
 }
 
 /// How close (relative to the size of its gap's terms) a point's gap in another half cycle
@@ -451,13 +454,22 @@ impl System<'_> {
 /// form may not exist (the friction moment can separate the half cycles' zones); without
 /// either, it exists whenever the load can be balanced, and only the iteration failed (red
 /// team 23: a translating punch at b = 0.15 was told about a friction moment it cannot have).
-pub fn failure_hint(sliding: SteadySliding, contact: &CondensedContact) -> &'static str {
+/// How far the frictionless state was followed in μ is said too: a failure at a μ far too
+/// small to move the zones is the iteration's, not the friction moment's.
+pub fn failure_hint(state: &SteadyState, contact: &CondensedContact) -> String {
     let turns = contact.rigid_names.contains(&"lambda_M");
-    match sliding {
+    let hint = match state.sliding {
         _ if contact.friction == 0.0 || !turns => "A steady state of this form exists whenever the load can be balanced (no friction moment turns the plate); the iteration did not find it (please report the problem file)",
         SteadySliding::Reciprocating => "If the friction moment separates the contact zones of the two half cycles, no steady state with one rigid wear per period exists",
         SteadySliding::Monotonic(_) => "With monotonic sliding the friction moment about the pin grows with μ; if it tips the plate onto an edge, no steady state of one rigid wear per step exists",
-    }
+    };
+    let mu = contact.friction;
+    let followed = match state.friction_reached {
+        Some(reached) if mu != 0.0 && turns && reached > 0.0 => format!("The steady state without friction was found and followed up to μ = {reached:.3e} of the problem's {mu:.3e}, and no further"),
+        Some(_) if mu != 0.0 && turns => format!("The steady state without friction was found but could not be followed even to μ = {:.3e} (1/64 of the problem's {mu:.3e})", mu / 64.0),
+        _ => return hint.to_string(),
+    };
+    format!("{followed}. {hint}; a μ too small to move the zones points to the iteration instead (please report the problem file)")
 }
 
 /// Compute the steady worn state of `contact` for half-period wear `terms` (from
@@ -526,40 +538,19 @@ pub fn steady_state_near(
             continuation::in_exponents(&system, terms, &mut z, &mut active, settings);
         (status, used) = (retry, used + iterations);
     }
+    let mut friction_reached = None;
     if status != SteadyStatus::Solved {
-        // A load near one end leaves a steady zone a fraction of the edge long, and the
-        // active sets from a uniform start cycle (red team 17: frictionless, zones under
-        // 3/8 of the punch). The unworn frictionless contact's pressures lie on the right
-        // side; with friction, μ is then walked to from none. (The contact is cloned only on
-        // this path of a failed start.)
-        let frictionless = (contact.friction != 0.0).then(|| {
-            let mut frictionless = contact.clone();
-            frictionless.friction = 0.0;
-            frictionless
-        });
-        if let Some(start_pressures) =
-            unworn_pressures(frictionless.as_ref().unwrap_or(contact), &signs)
-        {
-            let (mut retry_z, mut retry_active) = system.start(&start_pressures);
-            let (retry, iterations) = if contact.friction == 0.0 {
-                system.newton(terms, &mut retry_z, &mut retry_active, settings)
-            } else {
-                continuation::in_friction(
-                    contact,
-                    &signs,
-                    terms,
-                    &mut retry_z,
-                    &mut retry_active,
-                    settings,
-                )
-            };
-            used += iterations;
-            if retry == SteadyStatus::Solved {
-                (z, status) = (retry_z, retry);
-            }
+        let retry =
+            continuation::from_frictionless(&system, contact, sliding, &signs, terms, settings);
+        used += retry.iterations;
+        if retry.status == SteadyStatus::Solved {
+            (z, status) = (retry.z, retry.status);
         }
+        friction_reached = retry.friction_reached;
     }
-    Ok(system.state(sliding, terms, &z, status, used))
+    let mut state = system.state(sliding, terms, &z, status, used);
+    state.friction_reached = friction_reached;
+    Ok(state)
 }
 
 /// Without friction the two half cycles of reciprocating sliding are one contact problem on
@@ -648,6 +639,7 @@ impl System<'_> {
             status,
             iterations,
             wear_residual,
+            friction_reached: None,
         }
     }
 }

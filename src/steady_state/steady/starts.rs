@@ -74,6 +74,36 @@ impl<'a> System<'a> {
         (z, vec![vec![true; self.n]; self.halves])
     }
 
+    /// The iterate and active sets of a steady `state` of the same contact: shape, the forces
+    /// and rigid motions of each half cycle (a one-half state gives both halves its own, the
+    /// frictionless mirror image), the rigid wear.
+    pub(super) fn start_from_state(
+        &self,
+        state: &super::SteadyState,
+    ) -> (Vec<f64>, Vec<Vec<bool>>) {
+        let halves: Vec<(&Vec<f64>, &Vec<f64>)> = (0..self.halves)
+            .map(|h| {
+                if h == 1 && !state.p_minus.is_empty() {
+                    (&state.p_minus, &state.rigid_minus)
+                } else {
+                    (&state.p_plus, &state.rigid_plus)
+                }
+            })
+            .collect();
+        let pressures: Vec<&Vec<f64>> = halves.iter().map(|h| h.0).collect();
+        let (mut z, active) = self.start(&pressures);
+        z[..self.n].copy_from_slice(&state.shape);
+        for (h, (_, rigid)) in halves.iter().enumerate() {
+            for (k, &lambda) in rigid.iter().enumerate() {
+                z[self.lambda(h, k)] = lambda;
+            }
+        }
+        for (k, &w) in state.rigid_wear.iter().enumerate() {
+            z[self.wear_motion(k)] = w;
+        }
+        (z, active)
+    }
+
     /// The iterate and active sets of `pressures` (MPa, one profile per half cycle).
     pub(super) fn start<P: AsRef<[f64]>>(&self, pressures: &[P]) -> (Vec<f64>, Vec<Vec<bool>>) {
         let mut z = vec![0.0; self.size()];
