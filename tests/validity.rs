@@ -382,3 +382,96 @@ fn a_non_finite_half_period_wear_is_reported_as_unchecked() {
         "{warning}"
     );
 }
+
+/// The largest principal strain of the Lamé cylinder (examples/lame.toml), whose closed form
+/// is ε_θ = (1+ν)/E [(1−2ν)A + B/r²], ε_r = (1+ν)/E [(1−2ν)A − B/r²]. At E = 2 MPa the
+/// strain is far beyond small (the cylinder's 95 mm inner displacement on a 100 mm radius):
+/// the warning names it, with the value of the closed form at the point it names; at the
+/// example's E = 2e5 MPa (strain below 1e-3) nothing is said.
+#[test]
+fn large_strains_of_an_elastic_body_are_reported_with_their_value() {
+    let lame = |young: &str| {
+        let text =
+            std::fs::read_to_string(format!("{}/examples/lame.toml", env!("CARGO_MANIFEST_DIR")))
+                .unwrap();
+        let p = problem(&text, &[&format!("materials.steel.young={young}")]);
+        driver::elastic(&p).unwrap()["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| w.as_str().unwrap().to_string())
+            .collect::<Vec<_>>()
+    };
+    assert!(lame("2.0e5").is_empty());
+    let warnings = lame("2.0");
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    // "... is strained by 8.633e1 (8633 %) at (x, z) ..."
+    let w = &warnings[0];
+    let number = |after: &str, until: char| -> Vec<f64> {
+        let start = w.find(after).unwrap() + after.len();
+        let end = start + w[start..].find(until).unwrap();
+        w[start..end]
+            .split(", ")
+            .map(|s| s.parse().unwrap())
+            .collect()
+    };
+    let strain = number("strained by ", ' ')[0];
+    let at = number(") at (", ')');
+    let (nu, young, a, b, pressure) = (0.3, 2.0, 100.0f64, 200.0f64, 100.0);
+    let big_a = pressure * a * a / (b * b - a * a);
+    let big_b = pressure * a * a * b * b / (b * b - a * a);
+    let r2 = at[0] * at[0] + at[1] * at[1];
+    let hoop = (1.0 + nu) / young * ((1.0 - 2.0 * nu) * big_a + big_b / r2);
+    let radial = (1.0 + nu) / young * ((1.0 - 2.0 * nu) * big_a - big_b / r2);
+    let expected = hoop.abs().max(radial.abs());
+    // 1e-3: the warning prints 4 significant digits and the point to 1e-4 mm; p = 8 on the
+    // exact arcs reproduces the Lamé field to 1e-7 (tests/elastic.rs).
+    assert!(
+        (strain / expected - 1.0).abs() < 1e-3,
+        "{strain} against {expected}"
+    );
+}
+
+/// A soft layer 2 mm thick under a 40 mm punch: the plate moves by a small fraction of the
+/// punch (no displacement warning), but the layer's strain is large. Away from the punch's
+/// ends a layer much thinner than the contact is in uniaxial strain, ε = p (1+ν)(1−2ν) /
+/// (E (1−ν)) under the mean pressure p = 10 MPa, so the largest strain is at least that, and
+/// with E = 100 MPa (0.074) it is reported; at E = 10⁴ MPa (7.4e-4) it is not.
+#[test]
+fn a_strained_thin_layer_is_reported_although_the_plate_barely_moves() {
+    let warnings = |young: f64| {
+        let p = from_file(
+            "thin-soft-layer.toml",
+            &[&format!("materials.layer.young={young}")],
+        );
+        let (summary, ..) = driver::contact(&p).unwrap();
+        summary["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| w.as_str().unwrap().to_string())
+            .filter(|w| !w.starts_with("note"))
+            .collect::<Vec<_>>()
+    };
+    assert!(warnings(1e4).is_empty(), "{:?}", warnings(1e4));
+    let soft = warnings(100.0);
+    assert_eq!(soft.len(), 1, "{soft:?}");
+    assert!(soft[0].contains("body \"base\" is strained by"), "{soft:?}");
+    let start = soft[0].find("strained by ").unwrap() + "strained by ".len();
+    let strain: f64 = soft[0][start..].split(' ').next().unwrap().parse().unwrap();
+    let uniaxial = 10.0 * 1.3 * 0.4 / (100.0 * 0.7);
+    // The punch's ends concentrate strain (a corner of the contact), so above the uniaxial
+    // value, but by less than a factor 2 at the Gauss points of this mesh.
+    assert!(
+        strain >= uniaxial && strain < 2.0 * uniaxial,
+        "{strain} against {uniaxial}"
+    );
+    // The same check runs in `run` and `steady` through the first contact solve.
+    let p = from_file("thin-soft-layer.toml", &["materials.layer.young=100"]);
+    let (state, contact, _) = driver::steady(&p).unwrap();
+    let steady = validity::steady_checks(&p, &contact, &state);
+    assert!(
+        steady.iter().any(|w| w.contains("is strained by")),
+        "{steady:?}"
+    );
+}

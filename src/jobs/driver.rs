@@ -46,6 +46,8 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
             .solve(&load)
             .map_err(|e| problem.error("bodies", e.to_string()))?;
         energy += strain_energy(&load, &u);
+        let strain = super::validity::largest_strain(&body, &u);
+        warnings.extend(super::validity::strain_warning(problem, &body.name, strain));
         dofs += body.info.total_dofs;
         condensed += body.info.condensed_dofs;
         for (name, probe) in &problem.spec.probes {
@@ -261,7 +263,8 @@ pub fn contact(
     check_contact_probes(problem, &contact)?;
     let setup = start.elapsed().as_secs_f64();
     let mut solver = ContactSolver::new(&contact, method(problem)?);
-    let (solution, info) = solver.solve(&contact.points.initial_gap, direction(problem)?);
+    let first = direction(problem)?;
+    let (solution, info) = solver.solve(&contact.points.initial_gap, first);
     let rigid = crate::jobs::json::named(&contact.rigid_names, &solution.rigid);
     let probes: serde_json::Map<String, Value> = contact_probes(problem, &contact)
         .into_iter()
@@ -300,6 +303,9 @@ pub fn contact(
             problem,
             &contact,
             &solution.rigid,
+        ));
+        warnings.extend(super::validity::contact_strain_warnings(
+            problem, &contact, &solution, first,
         ));
         warnings.extend(zone_warnings(problem, &contact, &[&solution.pressure]));
         warnings.extend(crate::p_check::resolution_warnings(problem, &contact, true));

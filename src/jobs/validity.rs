@@ -16,7 +16,11 @@
 //!   k = 10⁶ wore 240 mm off a 40 mm punch; a 1 mm pad lost 1.8 mm) is outside the model
 //!   ([`wear_depth_warnings`], for each body by its own wear).
 //! - *Small displacements.* Linear elasticity: a plate motion that is not small against body 1
-//!   (E = 10⁻³ MPa moved the punch 690 m) is outside it ([`displacement_warning`]).
+//!   (E = 10⁻³ MPa moved the punch 690 m) is outside it ([`displacement_warning`]), and so
+//!   are strains that are not small ([`strain`]).
+
+mod strain;
+pub use strain::{contact_strain_warnings, largest_strain, strain_warning, STRAIN_LIMIT};
 
 use crate::complementarity::{ContactSolver, Direction, Status};
 use crate::contact::CondensedContact;
@@ -191,21 +195,28 @@ pub fn wear_depth_warnings(
         .collect()
 }
 
-/// A warning when the first contact solve's plate motion is not small: a translation λ_F
+/// Warnings when the first contact solve's plate motion is not small: a translation λ_F
 /// above [`GEOMETRY_LIMIT`] of body 1's extent along the contact normal, or a rotation λ_M
-/// above [`GEOMETRY_LIMIT`] rad. Linear elasticity assumes small displacements and
+/// above [`GEOMETRY_LIMIT`] rad; or when the bodies' strains are not
+/// ([`contact_strain_warnings`]). Linear elasticity assumes small displacements and
 /// rotations; a long body may move far at a small strain, hence the body's own size.
 pub fn displacement_warning(
     problem: &Problem,
     contact: &CondensedContact,
     solver: &mut ContactSolver,
     direction: Direction,
-) -> Option<String> {
+) -> Vec<String> {
     let (solution, info) = solver.solve(&contact.points.initial_gap, direction);
     if info.status != Status::Solved {
-        return None;
+        return Vec::new();
     }
-    plate_motion_warning(problem, contact, &solution.rigid)
+    let mut warnings: Vec<String> = plate_motion_warning(problem, contact, &solution.rigid)
+        .into_iter()
+        .collect();
+    warnings.extend(contact_strain_warnings(
+        problem, contact, &solution, direction,
+    ));
+    warnings
 }
 
 /// The warning of [`displacement_warning`] for a solved contact problem's plate unknowns
