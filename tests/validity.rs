@@ -177,7 +177,8 @@ shape_zero_at = 0.0
     );
     let soft = warnings(&["materials.steel.young=1e-3"]);
     assert!(
-        soft.iter().any(|w| w.contains("the plate moves by")),
+        soft.iter()
+            .any(|w| w.contains("the plate moves body 1's contact edge by")),
         "{soft:?}"
     );
 }
@@ -249,13 +250,52 @@ fn the_contact_job_checks_the_plate_motion() {
     let (summary, _, _, _) = driver::contact(&soft).unwrap();
     let warnings = summary["warnings"].as_array().unwrap();
     assert!(
-        warnings
-            .iter()
-            .any(|w| w.as_str().unwrap().contains("the plate moves by")),
+        warnings.iter().any(|w| w
+            .as_str()
+            .unwrap()
+            .contains("the plate moves body 1's contact edge by")),
         "{warnings:?}"
     );
     let (summary, _, _, _) = driver::contact(&builtin("punch-b40", &[])).unwrap();
     assert!(summary["warnings"].as_array().unwrap().is_empty());
+}
+
+/// The plate's motion is judged where it carries the contact, not at the pin (red team B: a
+/// pin 1 m to the side gave λ_F = 233 mm and a warning while the punch moved 0.014 mm; here a
+/// pin 0.9 km to the side of punch-b40 gives λ_F ≈ 30 mm, above a tenth of the punch). A
+/// pin moved along x spans the same rigid motions (a rotation about it differs from one
+/// about the old pin by a vertical translation), so the pressures are the same (1e-6 of the
+/// peak: the far pin's λ_F and λ_M nearly cancel at the punch, 1e5 times larger than their
+/// sum) and so is the plate's motion at the contact edge: no warning.
+#[test]
+fn the_plate_motion_is_measured_at_the_contact_not_at_a_far_pin() {
+    let near = builtin("punch-b40", &[]);
+    let far = builtin("punch-b40", &["plate.pin=[900000.0, 140.0]"]);
+    let (near_summary, ..) = driver::contact(&near).unwrap();
+    let (far_summary, ..) = driver::contact(&far).unwrap();
+    assert!(
+        far_summary["warnings"].as_array().unwrap().is_empty(),
+        "{:?}",
+        far_summary["warnings"]
+    );
+    let lambda_f = far_summary["rigid"]["lambda_F"].as_f64().unwrap();
+    assert!(lambda_f.abs() > 10.0, "the pin's own motion {lambda_f}");
+    let pressures = |s: &serde_json::Value| -> Vec<f64> {
+        s["pressure"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect()
+    };
+    let (a, b) = (pressures(&near_summary), pressures(&far_summary));
+    let peak = a.iter().cloned().fold(0.0, f64::max);
+    let worst = a
+        .iter()
+        .zip(&b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-6 * peak, "{worst} of {peak}");
 }
 
 /// Linear elements: Hertz (the example's 2 mm layers under a 6 mm zone) at p = 1 is several
