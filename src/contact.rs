@@ -51,8 +51,9 @@ pub struct ContactPoints {
     pub partner: Vec<Point>,
 }
 
-/// One constraint's displacement as a combination of global dofs: (x dof, z dof, coefficient).
-type Trace = Vec<([usize; 2], f64)>;
+/// One constraint's displacement as a combination of a body's global dofs (the boundary dofs
+/// of [`crate::elasticity::Displacement`]): (x dof, z dof, coefficient).
+pub type Trace = Vec<([usize; 2], f64)>;
 
 /// The contact problem condensed onto the contact points.
 #[derive(Clone, Debug)]
@@ -91,6 +92,12 @@ pub struct CondensedContact {
     /// Mesh lines added to body 2 under body 1's element ends (`contact.align_target_mesh`,
     /// [`crate::mesh::Mesh::aligned_to`]), and body 2's element count with them.
     pub target_mesh: TargetMesh,
+    /// Each constraint's displacement on body 1 and on body 2 (`[body 1, body 2]`, one
+    /// [`Trace`] per contact point): the point value at a contact point and at its partner
+    /// (collocation), or body 2's mortar average (1/D_ii) ∫ ψ_i N⁽²⁾. The flexibilities are
+    /// built from these, so a contact force F_i acts on body b as the load F_i · trace_b,i
+    /// ([`crate::deformation`]); a point force at the partner is not the same load on mortar.
+    pub traces: [Vec<Trace>; 2],
 }
 
 /// What aligning body 2's mesh with body 1's element ends did to it.
@@ -436,6 +443,7 @@ impl CondensedContact {
             },
             unmatched_lines,
             size_jumps,
+            traces: [traces1, traces2],
         };
         Ok(contact)
     }

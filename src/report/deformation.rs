@@ -3,16 +3,21 @@
 //! post-processing (ParaView output, stresses anywhere).
 //!
 //! With the contact forces F_i = P_i (−n_i + s μ τ_i) (N) of a [`ContactSolution`] on body 1 at
-//! its contact points and −F_i on body 2 at the partner points (paper eq. 2–3, 42):
+//! its contact points and −F_i on body 2 (paper eq. 2–3, 42), each applied through the
+//! constraint's trace on that body ([`CondensedContact::traces`]: at the partner point for
+//! collocation, spread as body 2's mortar average for mortar contact):
 //! - body 1 = rigid plate motion Σ λ_k φ_k(x) + the elastic field of body 1 with its plate
 //!   edge clamped under F and its own loads (all tractions except the plate edge's);
 //! - body 2 = the elastic field of body 2 on its supports under −F and its own loads.
 //!
-//! These are exactly the fields whose normal components at the contact points make up the
-//! condensed gap d = A_s P + R λ + g, so the gap they reproduce is the solution's gap.
+//! These are exactly the fields whose normal components in the constraints make up the
+//! condensed gap d = A_s P + R λ + g, so the gap they reproduce is the solution's gap. (Before
+//! 2026-11-29 body 2 took −F_i as point forces at the partner points on mortar contact too:
+//! on a body 2 meshed finer than body 1 its surface stresses were several times the
+//! pressure, growing with p, red team C.)
 
 use crate::complementarity::{ContactSolution, Direction};
-use crate::contact::CondensedContact;
+use crate::contact::{CondensedContact, Trace};
 use crate::elasticity::{Displacement, ElasticBody};
 use crate::fields::PointValues;
 use crate::geometry::Point;
@@ -85,19 +90,21 @@ impl BodyField {
     }
 }
 
-/// Add the point force `force` (N) at the boundary point `x` of `body` to the global load
-/// vector `load`. Only boundary modes are non-zero on the boundary, and those are the global
-/// dofs; `None` if `x` is not in the body.
-fn add_point_force(body: &ElasticBody, x: Point, force: Point, load: &mut [f64]) -> Option<()> {
-    let (element, xi, eta) = body.mesh.locate(x)?;
-    let tab = body.basis.tabulate(&[xi], &[eta]);
-    let dofs = body.dofs.element_dofs(&body.mesh, element);
-    for a in 0..body.basis.n_boundary() {
+/// Add the contact force `force` (N) of constraint `trace` to the global load vector `load`:
+/// the load that does the work F · u_trace, the one the condensation's flexibilities assume.
+fn add_trace_force(trace: &Trace, force: Point, load: &mut [f64]) {
+    for &(dofs, coef) in trace {
         for c in 0..2 {
-            load[dofs.global[2 * a + c]] += dofs.sign[2 * a + c] * tab.values[a] * force[c];
+            load[dofs[c]] += coef * force[c];
         }
     }
-    Some(())
+}
+
+/// The displacement of constraint `trace` under the boundary dofs `u` (mm).
+fn trace_value(trace: &Trace, u: &[f64]) -> Point {
+    trace.iter().fold([0.0, 0.0], |sum, &(dofs, coef)| {
+        [sum[0] + coef * u[dofs[0]], sum[1] + coef * u[dofs[1]]]
+    })
 }
 
 /// The contact force on body 1 at each contact point, F_i = P_i (−n_i + s μ τ_i), N.
@@ -154,21 +161,10 @@ pub fn contact_fields(
     let mut load1 = problem.load_vector(b1, body1, &plate_edge)?;
     let mut load2 = problem.load_vector(b2, body2, &plate_edge)?;
     let forces = contact_forces(contact, solution, direction);
-    let pts = &contact.points;
+    let [traces1, traces2] = &contact.traces;
     for (i, f) in forces.iter().enumerate() {
-        let missing = |body: &str, x: Point| {
-            problem.error(
-                "contact",
-                format!(
-                    "contact point ({:.6}, {:.6}) is not inside body \"{body}\"",
-                    x[0], x[1]
-                ),
-            )
-        };
-        add_point_force(body1, pts.x[i], *f, &mut load1)
-            .ok_or_else(|| missing(&body1.name, pts.x[i]))?;
-        add_point_force(body2, pts.partner[i], [-f[0], -f[1]], &mut load2)
-            .ok_or_else(|| missing(&body2.name, pts.partner[i]))?;
+        add_trace_force(&traces1[i], *f, &mut load1);
+        add_trace_force(&traces2[i], [-f[0], -f[1]], &mut load2);
     }
     Ok([
         BodyField {
@@ -186,9 +182,11 @@ pub fn contact_fields(
     ])
 }
 
-/// The gap n_i·(u²(y_i) − u¹(x_i)) + `geometric_gap[i]` at each contact point that the
-/// fields reproduce (mm), with y_i the partner point; `geometric_gap` is the gap of the
-/// undeformed bodies along n_c (plus any initial shape and wear).
+/// The gap n_i·(u²_i − u¹_i) + `geometric_gap[i]` at each contact point that the fields
+/// reproduce (mm), with u^b_i body b's displacement in constraint i (its value at the point or
+/// at its partner; body 2's mortar average on mortar contact: [`CondensedContact::traces`]);
+/// `geometric_gap` is the gap of the undeformed bodies along n_c (plus any initial shape and
+/// wear). `None` if a field does not match its body.
 pub fn gap_of_fields(
     (body1, body2): (&ElasticBody, &ElasticBody),
     fields: &[BodyField; 2],
@@ -196,14 +194,21 @@ pub fn gap_of_fields(
     geometric_gap: &[f64],
 ) -> Option<Vec<f64>> {
     let pts = &contact.points;
-    (0..contact.len())
-        .map(|i| {
-            let u1 = fields[0].values_at(body1, pts.x[i])?.displacement;
-            let u2 = fields[1].values_at(body2, pts.partner[i])?.displacement;
-            let n = pts.normal[i];
-            Some(n[0] * (u2[0] - u1[0]) + n[1] * (u2[1] - u1[1]) + geometric_gap[i])
-        })
-        .collect()
+    let [traces1, traces2] = &contact.traces;
+    let sizes_match = fields[0].elastic.boundary.len() == body1.dofs.n_dofs()
+        && fields[1].elastic.boundary.len() == body2.dofs.n_dofs();
+    sizes_match.then(|| {
+        (0..contact.len())
+            .map(|i| {
+                let rigid = fields[0].rigid.at(pts.x[i]);
+                let e1 = trace_value(&traces1[i], &fields[0].elastic.boundary);
+                let u1 = [e1[0] + rigid[0], e1[1] + rigid[1]];
+                let u2 = trace_value(&traces2[i], &fields[1].elastic.boundary);
+                let n = pts.normal[i];
+                n[0] * (u2[0] - u1[0]) + n[1] * (u2[1] - u1[1]) + geometric_gap[i]
+            })
+            .collect()
+    })
 }
 
 #[cfg(test)]
