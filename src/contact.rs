@@ -153,6 +153,21 @@ fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize
     chain
 }
 
+/// Whether the element edges `edges` of `body` close on themselves: every vertex they touch
+/// is shared by two of them, so the chain has no end.
+fn closed_loop(body: &ElasticBody, edges: &[(usize, usize)]) -> bool {
+    let mut touches: std::collections::HashMap<usize, usize> = Default::default();
+    for &(e, l) in edges {
+        let (a, b) = crate::mesh::EDGE_ENDPOINTS[l];
+        for v in [a, b] {
+            *touches
+                .entry(body.mesh.elements[e].vertices[v])
+                .or_default() += 1;
+        }
+    }
+    !edges.is_empty() && touches.values().all(|&n| n == 2)
+}
+
 impl ContactPoints {
     /// Gauss–Lobatto points (p + 1 per element edge, shared end points) along body 1's edge,
     /// with one trace per point for body 1.
@@ -375,6 +390,17 @@ impl CondensedContact {
             .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
             .to_vec();
         let t = problem.analysis.thickness();
+        // A press fit's loop once gave its start twice, one copy with twice the pressure and
+        // the other none, in silence (red team A).
+        if closed_loop(body1, &edge1) {
+            return Err(problem.error(
+                "contact.edge",
+                format!(
+                    "edge \"{}\" of body 1 is a closed loop (a shaft or ring all round), but a contact edge needs two ends: its points are ordered from one end to the other, and a loop's start would be two contact points at one place. Name an open part of it (split the loop into two or more named edges: `names` of the blocks), and model the rest with symmetry supports or as a second problem",
+                    c.edge
+                ),
+            ));
+        }
         let (mut points, traces1, chain) =
             ContactPoints::on_body1(body1, &edge1).ok_or_else(|| {
                 problem.error(

@@ -769,3 +769,23 @@ fn a_plate_pinned_at_the_contact_arcs_centre_is_refused() {
     let (code, err) = run_cli("contact", &[], &text, "brake_pin_off_centre");
     assert_ne!(code, 2, "{err}");
 }
+
+/// A contact edge that closes on itself (a shaft all round in a ring) has no two ends to order
+/// its points from: its start was two contact points at one place, one with twice the
+/// pressure and the other none, in silence (red team A). Refused, naming `contact.edge`.
+#[test]
+fn a_closed_loop_contact_edge_is_refused() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/press-fit-loop.toml"
+    ))
+    .unwrap();
+    for command in ["contact", "run", "steady"] {
+        let (code, err) = run_cli(command, &[], &text, "loop");
+        assert_eq!(code, 2, "{command}: {err}");
+        assert!(
+            err.contains("loop.toml: contact.edge: edge \"contact\" of body 1 is a closed loop"),
+            "{command}: {err}"
+        );
+    }
+}
