@@ -777,7 +777,7 @@ fn a_plate_pinned_at_the_contact_arcs_centre_is_refused() {
 fn a_closed_loop_contact_edge_is_refused() {
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/tests/problems/press-fit-loop.toml"
+        "/tests/bad-input/contact-edge-closed-loop.toml"
     ))
     .unwrap();
     for command in ["contact", "run", "steady"] {
