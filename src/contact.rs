@@ -333,19 +333,29 @@ fn body2_traces(
         "mortar" => {
             let m = mortar_traces(body1, chain, body2, edge2, points.x.len(), shape)
                 .map_err(no_partner)?;
-            points.initial_gap = m.gap;
             points.weight = m.weight;
-            // The point of body 2 facing each contact point (for post-processing; the
-            // constraint itself couples body 2 through the mortar trace). Where the normal
-            // line misses body 2's edge, the contact point itself stands in.
+            // The geometric gap of each constraint is the gap at its own point, g₀(x_i): the
+            // ψ_i-weighted mean equals it for every g₀ that body 1's element polynomials
+            // interpolate (biorthogonality, as for the wear), but ψ_i has negative lobes, and
+            // across a step or groove of body 2's surface inside one of body 1's elements the
+            // mean of a jump of 1 mm was a false interference of 0.1 mm: 14 000 MPa at a
+            // point beside a Hertz zone (red team A). The point of body 2 facing each contact
+            // point is also the partner for post-processing (the constraint itself couples
+            // body 2 through the mortar trace). Where the normal line misses body 2's edge,
+            // the mean stays and the contact point itself stands in as partner.
+            let mut gap = m.gap;
             points.partner = (0..points.x.len())
-                .map(|i| {
-                    locate_on_body2(body2, edge2, points.x[i], points.normal[i])
-                        .map_or(points.x[i], |(_, e, l, t)| {
+                .map(
+                    |i| match locate_on_body2(body2, edge2, points.x[i], points.normal[i]) {
+                        Some((sigma, e, l, t)) => {
+                            gap[i] = sigma + shape(points.x[i]);
                             body2.mesh.point_on_edge(e, l, t)
-                        })
-                })
+                        }
+                        None => points.x[i],
+                    },
+                )
                 .collect();
+            points.initial_gap = gap;
             Ok(m.traces)
         }
         other => Err(spec::unknown_discretisation(problem, other)),

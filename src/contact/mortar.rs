@@ -18,7 +18,10 @@
 //! d_i = (1/D_ii) ∫ ψ_i [ (u⁽²⁾(π(x)) − u⁽¹⁾(x))·n_i + g₀(x) ] ds,
 //!
 //! where π(x) is the point of body 2's edge on the line x + σ n(x) and g₀(x) = σ plus any
-//! initial shape. Biorthogonality turns body 1's part into the point value u⁽¹⁾(x_i)·n_i, the
+//! initial shape. The geometric part is then taken at the point itself, g₀(x_i) (in
+//! `CondensedContact::build`): the mean equals it whenever body 1's element polynomials
+//! interpolate g₀, as they do the wear, and ψ_i's negative lobes made the mean of a step or
+//! groove of body 2's surface inside one of body 1's elements a false interference. Biorthogonality turns body 1's part into the point value u⁽¹⁾(x_i)·n_i, the
 //! same trace as collocation, and makes a wear w = Σ_j w_j N_j change d_i by w_i alone. The
 //! virtual work t ∫ λ d ds = Σ_i P_i d_i with P_i = p_i D_ii t: P_i/(D_ii t) is the weighted
 //! mean pressure at point i (for a uniform pressure, exactly that pressure), and the contact
