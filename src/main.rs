@@ -393,10 +393,19 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 Some(d) => {
                     use wearfem::steady_check::SteadyCheck;
                     let settled = d.unsettled() <= wearfem::wear::STEADY_REPORT_LIMIT;
+                    let penalty = matches!(
+                        driver::method(&p),
+                        Ok(wearfem::complementarity::Method::Penalty { .. })
+                    );
                     let verdict = if result.steady_check.reached(h) {
                         "at the steady state"
                     } else if matches!(result.steady_check, SteadyCheck::SeparateZones { .. }) {
                         "NOT a steady state of one rigid wear per period, and none exists to reach (run longer only to see whether the pressures still change)"
+                    } else if matches!(result.steady_check, SteadyCheck::Unavailable(_)) {
+                        // `wearfem steady` cannot help where there is none to compare with.
+                        "NOT at a steady state by its last cycle's own wear: run longer to see whether it settles"
+                    } else if penalty {
+                        "NOT at the steady state of exact contact, which `wearfem steady` computes whatever `contact.method` says: the penalty method's own steady state lies beside it by the penalty's overlap (see the c_n warning; raise contact.penalty)"
                     } else if settled {
                         "NOT at the steady state, though one cycle changes little: a slow approach (run longer) or a schedule that settles beside it (explicit `substeps`, very large k); `wearfem steady` gives the steady state directly"
                     } else {
