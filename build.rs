@@ -5,7 +5,10 @@
 //! `WEARFEM_VERSION` is the crate version, plus `+g<12 hex digits of the commit>` when the
 //! source is a git checkout and `git` runs (PEP 440 local version and SemVer build metadata
 //! alike). Without git, or outside a checkout (a source tarball), it is the crate version
-//! alone: the build never fails for want of git. Uncommitted changes are not marked.
+//! alone: the build never fails for want of git. A build from a tree with uncommitted changes
+//! to tracked files adds `.modified` (`0.1.0+g1a2b3c4d5e6f.modified`): such a build is not
+//! the commit it names (red team C: a binary with a new warning was stamped as the commit
+//! before it).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -50,9 +53,17 @@ fn main() {
     for path in watch.iter().filter(|p| p.exists()) {
         println!("cargo:rerun-if-changed={}", path.display());
     }
-    let stamp = match commit {
-        Some(c) => format!("{version}+g{c}"),
-        None => version,
+    // Any change to the sources may change whether the tree is modified.
+    for path in ["src", "Cargo.toml", "python/src", "python/wearfem"] {
+        if root.join(path).exists() {
+            println!("cargo:rerun-if-changed={}", root.join(path).display());
+        }
+    }
+    let modified = git(&root, &["status", "--porcelain", "--untracked-files=no"]).is_some();
+    let stamp = match (commit, modified) {
+        (Some(c), false) => format!("{version}+g{c}"),
+        (Some(c), true) => format!("{version}+g{c}.modified"),
+        (None, _) => version,
     };
     println!("cargo:rustc-env=WEARFEM_VERSION={stamp}");
 }
