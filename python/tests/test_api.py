@@ -22,6 +22,21 @@ def test_bad_key_raises_with_key(punch):
     assert str(e.value).startswith("built-in example punch-b40: contact.frictoin: ")
 
 
+def test_a_misspelt_key_in_a_file_is_named_without_its_line():
+    """Red team C: ``.key`` was ``"contact.frictoin (line 4)"``; the line is ``.line``, and
+    ``str(error)`` stays the command line's message."""
+    text = wearfem.Problem.builtin("punch-b40").to_toml().replace("friction = ", "frictoin = ")
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.Problem.from_toml(text, "misspelt.toml")
+    line = next(i + 1 for i, l in enumerate(text.splitlines()) if l.startswith("frictoin"))
+    assert e.value.key == "contact.frictoin" and e.value.line == line
+    assert str(e.value).startswith(f"misspelt.toml: contact.frictoin (line {line}): ")
+    import pickle
+
+    again = pickle.loads(pickle.dumps(e.value))
+    assert (again.key, again.line, str(again)) == (e.value.key, line, str(e.value))
+
+
 def test_bad_value_type_raises_with_key(punch):
     with pytest.raises(wearfem.ProblemError) as e:
         punch.with_overrides({"contact.friction": "lots"})

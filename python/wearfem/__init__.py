@@ -49,19 +49,24 @@ FloatArray = _npt.NDArray[np.float64]
 
 
 class WearfemError(ValueError):
-    """Bad input: ``file``, dotted ``key`` (``contact.friction``) and ``message``.
+    """Bad input: ``file``, dotted ``key`` (``contact.friction``), ``message``, and ``line``
+    (1-based line of the file, or None where the error has no line of its own).
 
-    ``str(error)`` is the command line's message ``FILE: KEY: message``.
+    ``str(error)`` is the command line's message ``FILE: KEY (line N): message``; ``key`` is
+    the key alone, as ``with_overrides`` takes it.
     """
 
     def __init__(self, file: str, key: str, message: str):
         super().__init__(f"{file}: {key}: {message}")
+        self._located_key = key
+        located = _re.fullmatch(r"(.*) \(line (\d+)\)", key)
         self.file = file
-        self.key = key
+        self.key = located.group(1) if located else key
+        self.line = int(located.group(2)) if located else None
         self.message = message
 
     def __reduce__(self):
-        return (type(self), (self.file, self.key, self.message))
+        return (type(self), (self.file, self._located_key, self.message))
 
 
 #: Alias: the Rust library calls this error ``ProblemError``.
@@ -330,8 +335,7 @@ class Problem:
             return cls.from_toml(_toml_text(d, file), file)
         except WearfemError as e:
             # Its line number is of the TOML text made from the dict, which the caller never sees.
-            key = _re.sub(r" \(line \d+\)$", "", e.key)
-            raise WearfemError(e.file, key, e.message) from None
+            raise WearfemError(e.file, e.key, e.message) from None
 
     @classmethod
     def builtin(cls, name: str) -> "Problem":

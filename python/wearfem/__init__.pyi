@@ -32,6 +32,7 @@ class WearfemError(ValueError):
 
     file: str
     key: str
+    line: Optional[int]
     message: str
     def __init__(self, file: str, key: str, message: str) -> None: ...
 
