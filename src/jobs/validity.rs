@@ -17,7 +17,7 @@
 //!   ([`wear_depth_warnings`], for each body by its own wear).
 //! - *Small displacements.* Linear elasticity: a plate motion that is not small against body 1
 //!   (E = 10⁻³ MPa moved the punch 690 m) is outside it ([`displacement_warning`]), and so
-//!   are strains that are not small ([`strain`]).
+//!   are strains that are not small ([`largest_strain`], [`contact_strain_warnings`]).
 
 mod strain;
 pub use strain::{contact_strain_warnings, largest_strain, strain_warning, STRAIN_LIMIT};

@@ -75,7 +75,7 @@ pub fn half_period_sliding(amplitude: f64, omega: f64, a: f64) -> f64 {
 /// The same integral over the sub-interval ωτ ∈ [θ₀, θ₁] ⊂ [0, π] (exact closed form for
 /// a = 1). sinᵃ θ behaves as θᵃ at both ends of the half period, a singular derivative that
 /// plain Gauss–Legendre integrated to about 1e-4 at a = 0.2 (red team B: Archard's area of an
-/// explicitly sub-stepped run 1.1e-4 off): see [`sin_power_integral`].
+/// explicitly sub-stepped run 1.1e-4 off): integrated in Gauss pieces halving towards the ends.
 pub fn partial_sliding(amplitude: f64, omega: f64, a: f64, theta: [f64; 2]) -> f64 {
     if a == 1.0 {
         return amplitude * (theta[0].cos() - theta[1].cos());
