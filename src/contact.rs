@@ -29,7 +29,7 @@ pub mod zone;
 use flexibility::add_flexibility;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
-pub use resolution::{CoarseZone, PointResolution, SizeJump, UnmatchedLine};
+pub use resolution::{CoarseZone, PointResolution, SizeJump, SurfaceMisfit, UnmatchedLine};
 pub use spec::{check_settings, CircleShape, ContactSpec, PlateSpec};
 pub use zone::EdgeEnd;
 
@@ -98,6 +98,10 @@ pub struct CondensedContact {
     /// built from these, so a contact force F_i acts on body b as the load F_i · trace_b,i
     /// ([`crate::deformation`]); a point force at the partner is not the same load on mortar.
     pub traces: [Vec<Trace>; 2],
+    /// Mortar only: per contact element of body 1, where body 2's surface departs most from
+    /// the polynomial through the constraints' gaps (see
+    /// [`CondensedContact::surface_misfit_in_contact`]); empty for collocation.
+    pub surface_misfits: Vec<SurfaceMisfit>,
 }
 
 /// What aligning body 2's mesh with body 1's element ends did to it.
@@ -290,7 +294,7 @@ fn body2_traces(
     body2: &ElasticBody,
     edge2: &[(usize, usize)],
     points: &mut ContactPoints,
-) -> Result<Vec<Trace>, ProblemError> {
+) -> Result<(Vec<Trace>, Vec<SurfaceMisfit>), ProblemError> {
     if c.initial_shape.is_some() {
         // The crown is a function of the global x: along an edge inclined by θ it would be a
         // cylinder of radius R/cos²θ (a review's Hertz turned by 30°: 13 % low), and nothing
@@ -328,7 +332,7 @@ fn body2_traces(
                 points.partner.push(partner);
                 traces2.push(tr);
             }
-            Ok(traces2)
+            Ok((traces2, Vec::new()))
         }
         "mortar" => {
             let m = mortar_traces(body1, chain, body2, edge2, points.x.len(), shape)
@@ -356,7 +360,9 @@ fn body2_traces(
                 )
                 .collect();
             points.initial_gap = gap;
-            Ok(m.traces)
+            let misfits =
+                mortar::surface_misfits(body1, chain, body2, edge2, &points.initial_gap, shape);
+            Ok((m.traces, misfits))
         }
         other => Err(spec::unknown_discretisation(problem, other)),
     }
@@ -421,7 +427,8 @@ impl CondensedContact {
                     ),
                 )
             })?;
-        let traces2 = body2_traces(problem, c, body1, &chain, body2, &edge2, &mut points)?;
+        let (traces2, surface_misfits) =
+            body2_traces(problem, c, body1, &chain, body2, &edge2, &mut points)?;
         // Loads on the bodies themselves (all tractions but the plate's, which load the plate)
         // move the contact points before any contact force acts: their normal displacements
         // enter the gap, d = u_n⁽²⁾ − u_n⁽¹⁾ + g.
@@ -480,6 +487,7 @@ impl CondensedContact {
             unmatched_lines,
             size_jumps,
             traces: [traces1, traces2],
+            surface_misfits,
         };
         Ok(contact)
     }
@@ -573,6 +581,27 @@ impl CondensedContact {
     /// `pressures`: a pressure there can dip far below its neighbours.
     pub fn size_jump_in_contact(&self, pressures: &[&[f64]]) -> Option<SizeJump> {
         resolution::size_jump_in_contact(&self.size_jumps, pressures)
+    }
+
+    /// Mortar only: the largest departure of body 2's surface from what the contact points
+    /// see (the polynomial through their gaps, [`SurfaceMisfit`]) on an element of body 1 in
+    /// contact in any of `pressures` (MPa, one value per point), when it exceeds
+    /// [`resolution::SURFACE_MISFIT_SHARE`] of the contact's elastic approach under the
+    /// first of them (the largest |A_nn F|, mm): a ridge, groove or step of body 2 narrower
+    /// than the spacing of body 1's contact points, which the constraints do not see.
+    pub fn surface_misfit_in_contact(&self, pressures: &[&[f64]]) -> Option<SurfaceMisfit> {
+        let first = pressures.first()?;
+        let n = self.len();
+        let force: Vec<f64> = first.iter().zip(self.areas()).map(|(p, a)| p * a).collect();
+        let approach = (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| self.a_nn[i * n + j] * force[j])
+                    .sum::<f64>()
+                    .abs()
+            })
+            .fold(0.0, f64::max);
+        resolution::misfit_in_contact(&self.surface_misfits, pressures, approach)
     }
 
     /// Whether there are no contact points.

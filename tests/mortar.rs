@@ -932,3 +932,55 @@ fn a_groove_beside_the_zone_inside_an_element_of_body_1_changes_nothing() {
         "pressure {outside:.3e} MPa outside the zone"
     );
 }
+
+/// A ridge of body 2 (1 µm high, 0.2 mm wide) between two of body 1's contact points: the
+/// constraints, which take the gap at their points, see none of it, so the job says so, with
+/// the ridge's height as the misfit (the punch's face 1 µm above the strip, the ridge's top
+/// touching it: exactly 1e-3 mm). With body 1's mesh lines at the ridge's ends the points see
+/// it, it carries pressure, and nothing is said. The shipped mortar examples (smooth
+/// surfaces, arcs) say nothing either.
+#[test]
+fn a_ridge_between_contact_points_is_reported() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/ridge-between-points.toml"
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    let misfit_warnings = |p: &Problem| -> Vec<String> {
+        let (summary, ..) = wearfem::driver::contact(p).unwrap();
+        summary["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| w.as_str().unwrap().to_string())
+            .filter(|w| w.contains("between body 1's contact points"))
+            .collect()
+    };
+    let unresolved = Problem::with_overrides(&text, "ridge", &[]).unwrap();
+    let (contact, sol) = solve(&unresolved);
+    let m = contact
+        .surface_misfit_in_contact(&[&sol.pressure])
+        .expect("a misfit in contact");
+    // 1e-9 mm: round-off of the gaps (1e-3 mm) and of locating the ridge's top.
+    assert!((m.misfit + 1e-3).abs() < 1e-9, "misfit {} mm", m.misfit);
+    assert!(0.4 <= m.x[0] && m.x[0] <= 0.6, "at {:?}", m.x);
+    assert_eq!(misfit_warnings(&unresolved).len(), 1);
+    let lines = Override::parse("bodies[0].blocks[0].u=[0.0, 0.2, 0.4, 0.52, 0.53, 0.6, 0.8, 1.0]")
+        .unwrap();
+    let resolved = Problem::with_overrides(&text, "ridge", &[lines]).unwrap();
+    assert!(misfit_warnings(&resolved).is_empty());
+    let (contact, sol) = solve(&resolved);
+    let on_ridge = contact
+        .points
+        .x
+        .iter()
+        .zip(&sol.pressure)
+        .filter(|(x, _)| 0.4 < x[0] && x[0] < 0.6)
+        .map(|(_, p)| *p)
+        .fold(0.0, f64::max);
+    assert!(on_ridge > 0.0, "the ridge carries nothing");
+    for name in ["hertz", "pin", "brake-independent"] {
+        let p = Problem::from_toml(wearfem::examples::example(name).unwrap(), name).unwrap();
+        assert!(misfit_warnings(&p).is_empty(), "{name}");
+    }
+}

@@ -257,6 +257,74 @@ pub(super) fn mortar_traces(
     })
 }
 
+/// Where body 2's surface departs from what the constraints see: on each of body 1's
+/// contact elements the largest |g₀(x) − Σ_b N_b(x) g_b| over the Gauss points of the pieces
+/// between body 2's element ends (so that every feature made of body 2's elements is
+/// sampled), g_b the constraints' point gaps `point_gap` (mm). A ridge or groove of body 2
+/// narrower than the spacing of body 1's contact points falls between them, and the
+/// constraints see none of it (red team D: a ridge 1 µm high and 0.2 mm wide between two
+/// points carried 16 % of a flat punch's load in a mesh that resolves it, and nothing in one
+/// that does not). Elements with no misfit above 1e-12 mm are left out.
+pub(super) fn surface_misfits(
+    body1: &ElasticBody,
+    chain: &[ChainElement],
+    body2: &ElasticBody,
+    edges2: &[(usize, usize)],
+    point_gap: &[f64],
+    shape: impl Fn(crate::geometry::Point) -> f64,
+) -> Vec<super::resolution::SurfaceMisfit> {
+    let p1 = body1.dofs.p;
+    let nodes = gauss_lobatto(p1 + 1).points;
+    let rule = gauss_legendre(p1.max(body2.dofs.p) + 3);
+    let mut lag = vec![0.0; p1 + 1];
+    let mut misfits = Vec::new();
+    for c in chain {
+        let mut worst = super::resolution::SurfaceMisfit {
+            x: [0.0, 0.0],
+            misfit: 0.0,
+            points: [c.first_point, c.first_point + p1],
+        };
+        let gap_at = |s: f64| {
+            let t = if c.reversed { -s } else { s };
+            let x = body1.mesh.point_on_edge(c.element, c.local, t);
+            let (_, normal) = body1.mesh.edge_frame(c.element, c.local, t);
+            super::locate_on_body2(body2, edges2, x, normal)
+                .map(|(sigma, ..)| (x, sigma + shape(x)))
+        };
+        // The element's own limits at its ends: a step of body 2 under a shared end point (a
+        // mesh line of body 1 at the step, as advised) has one gap on each side, and the
+        // point's gap is one of them; the element is judged by its own side's (1e-6 of the
+        // element inside, beyond the 1e-10 within which an edge's end counts as crossed).
+        let mut seen_at_nodes: Vec<f64> = point_gap[c.first_point..=c.first_point + p1].to_vec();
+        for (b, s) in [(0, -1.0 + 1e-6), (p1, 1.0 - 1e-6)] {
+            if let Some((_, g)) = gap_at(s) {
+                seen_at_nodes[b] = g;
+            }
+        }
+        let breaks = break_points(body1, c, body2, edges2);
+        for piece in breaks.windows(2) {
+            let half = 0.5 * (piece[1] - piece[0]);
+            for &r in &rule.points {
+                let s = piece[0] + half * (r + 1.0);
+                let Some((x, g0)) = gap_at(s) else {
+                    continue;
+                };
+                lagrange(&nodes, s, &mut lag);
+                let seen: f64 = (0..=p1).map(|b| lag[b] * seen_at_nodes[b]).sum();
+                let misfit = g0 - seen;
+                if misfit.abs() > worst.misfit.abs() {
+                    worst.misfit = misfit;
+                    worst.x = x;
+                }
+            }
+        }
+        if worst.misfit.abs() > 1e-12 {
+            misfits.push(worst);
+        }
+    }
+    misfits
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

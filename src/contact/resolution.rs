@@ -336,6 +336,39 @@ pub(super) fn size_jump_in_contact(jumps: &[SizeJump], pressures: &[&[f64]]) -> 
         .copied()
 }
 
+/// Where body 2's surface departs most, on one of body 1's contact elements, from the
+/// surface its contact points see (the polynomial through their gaps).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceMisfit {
+    /// Where on body 1's edge [x, z], mm.
+    pub x: Point,
+    /// g₀ there minus the polynomial through the points' gaps, mm: negative where body 2
+    /// rises above what the points see (a ridge), positive where it falls away (a groove).
+    pub misfit: f64,
+    /// The contact points of body 1's element (first, last).
+    pub points: [usize; 2],
+}
+
+/// Share of the contact's elastic approach above which a misfit is reported: the contact
+/// is a linear response to the gap, so a misfit of this share changes the pressures near it
+/// by about as much of their size, and a narrow feature concentrates far more.
+pub const SURFACE_MISFIT_SHARE: f64 = 0.01;
+
+/// The largest misfit on an element in contact in any of `pressures` that exceeds
+/// [`SURFACE_MISFIT_SHARE`] of `approach` (mm).
+pub(super) fn misfit_in_contact(
+    misfits: &[SurfaceMisfit],
+    pressures: &[&[f64]],
+    approach: f64,
+) -> Option<SurfaceMisfit> {
+    misfits
+        .iter()
+        .filter(|m| m.misfit.abs() > SURFACE_MISFIT_SHARE * approach)
+        .filter(|m| span_in_contact(m.points, pressures))
+        .max_by(|a, b| a.misfit.abs().total_cmp(&b.misfit.abs()))
+        .copied()
+}
+
 /// Whether any of the points `first..=last` carries pressure (above 1e-6 of the profile's
 /// peak, which is round-off of the active-set solve) in any of `pressures`.
 fn span_in_contact([first, last]: [usize; 2], pressures: &[&[f64]]) -> bool {

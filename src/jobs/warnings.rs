@@ -130,6 +130,17 @@ pub fn zone_warnings(
             problem.file, x[0], x[1]
         ));
     }
+    if let Some(m) = contact.surface_misfit_in_contact(pressures) {
+        let what = if m.misfit < 0.0 {
+            "rises"
+        } else {
+            "falls away"
+        };
+        warnings.push(format!(
+            "warning: {}: between body 1's contact points near ({:.4}, {:.4}), inside the contact, body 2's surface {what} by {:.3e} mm from what the points see (a ridge, groove or step narrower than their spacing): the contact constraints do not see it, and the pressures there can be far off. Put mesh lines of body 1 at the feature's ends, or refine body 1's contact edge there until its points resolve it (docs/problem-files.md, Meshing the contact fine enough)",
+            problem.file, m.x[0], m.x[1], m.misfit.abs()
+        ));
+    }
     for z in contact.coarse_partner_zones(pressures) {
         if z.body == 1 {
             let width = (z.to[0] - z.from[0]).hypot(z.to[1] - z.from[1]);
