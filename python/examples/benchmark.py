@@ -49,11 +49,18 @@ def main():
     # Dask's two kinds of local cluster: threads in this process (the Dask documentation's
     # advice for code that releases the GIL, as wearfem does), and worker processes (each with
     # its own interpreter, as on a cluster).
-    for label, layout in [
-        (f"Dask LocalCluster (threads, 1 × {WORKERS})", dict(n_workers=1, threads_per_worker=WORKERS, processes=False)),
-        (f"Dask LocalCluster (processes, {WORKERS} × 1)", dict(n_workers=WORKERS, threads_per_worker=1, processes=True)),
+    # The last row turns down Dask's per-worker profiler and monitors (dask_quiet.py), which
+    # take CPU from the solves on a machine with no cores to spare.
+    import dask
+    from dask_quiet import QUIET
+
+    processes = dict(n_workers=WORKERS, threads_per_worker=1, processes=True)
+    for label, layout, config in [
+        (f"Dask LocalCluster (threads, 1 × {WORKERS})", dict(n_workers=1, threads_per_worker=WORKERS, processes=False), {}),
+        (f"Dask LocalCluster (processes, {WORKERS} × 1)", processes, {}),
+        (f"Dask LocalCluster (processes, {WORKERS} × 1, quiet)", processes, QUIET),
     ]:
-        with LocalCluster(dashboard_address=None, **layout) as cluster, Client(cluster) as client:
+        with dask.config.set(config), LocalCluster(dashboard_address=None, **layout) as cluster, Client(cluster) as client:
             wearfem.study(punch, {"contact.friction": [0.2, 0.25]}, executor=client)  # workers warm
             rows.append(timed(label, WORKERS, client))
 
