@@ -75,6 +75,7 @@ def test_syntax_error_names_line():
         wearfem.Problem.from_toml("title = 'x'\n[contact\n", "broken.toml")
     assert e.value.file == "broken.toml"
     assert e.value.key.startswith("line ")
+    assert e.value.line == int(e.value.key.split()[1])
 
 
 def test_overrides_change_what_they_name(punch):

@@ -49,8 +49,9 @@ FloatArray = _npt.NDArray[np.float64]
 
 
 class WearfemError(ValueError):
-    """Bad input: ``file``, dotted ``key`` (``contact.friction``), ``message``, and ``line``
-    (1-based line of the file, or None where the error has no line of its own).
+    """Bad input: ``file``, dotted ``key`` (``contact.friction``; ``line N`` for a TOML syntax
+    error, which names no key), ``message``, and ``line`` (1-based line of the file, or None
+    where the error has no line of its own).
 
     ``str(error)`` is the command line's message ``FILE: KEY (line N): message``; ``key`` is
     the key alone, as ``with_overrides`` takes it.
@@ -60,9 +61,11 @@ class WearfemError(ValueError):
         super().__init__(f"{file}: {key}: {message}")
         self._located_key = key
         located = _re.fullmatch(r"(.*) \(line (\d+)\)", key)
+        # A TOML syntax error names a line and no key: the CLI's "FILE: line N: message".
+        syntax = _re.fullmatch(r"line (\d+)", key)
         self.file = file
         self.key = located.group(1) if located else key
-        self.line = int(located.group(2)) if located else None
+        self.line = int(located.group(2)) if located else int(syntax.group(1)) if syntax else None
         self.message = message
 
     def __reduce__(self):
