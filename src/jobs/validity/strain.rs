@@ -115,7 +115,9 @@ fn strain_could_be_large(
 }
 
 /// The strain warnings of both bodies under a solved contact problem (`solution` in
-/// `direction`), when [`strain_could_be_large`] says they could matter.
+/// `direction`), when the loads and the contact's deflection say they could matter: the
+/// largest load stress over the softest modulus above a tenth of [`STRAIN_LIMIT`], or the
+/// contact's approach over both bodies' extent above a hundredth of it.
 pub fn contact_strain_warnings(
     problem: &Problem,
     contact: &CondensedContact,
