@@ -589,25 +589,22 @@ impl CondensedContact {
         resolution::size_jump_in_contact(&self.size_jumps, pressures)
     }
 
-    /// Mortar only: the largest departure of body 2's surface from what the contact points
-    /// see (the polynomial through their gaps, [`SurfaceMisfit`]) on an element of body 1 in
-    /// contact in any of `pressures` (MPa, one value per point), when it exceeds
-    /// [`resolution::SURFACE_MISFIT_SHARE`] of the contact's elastic approach under the
-    /// first of them (the largest |A_nn F|, mm): a ridge, groove or step of body 2 narrower
-    /// than the spacing of body 1's contact points, which the constraints do not see.
-    pub fn surface_misfit_in_contact(&self, pressures: &[&[f64]]) -> Option<SurfaceMisfit> {
-        let first = pressures.first()?;
-        let n = self.len();
-        let force: Vec<f64> = first.iter().zip(self.areas()).map(|(p, a)| p * a).collect();
-        let approach = (0..n)
-            .map(|i| {
-                (0..n)
-                    .map(|j| self.a_nn[i * n + j] * force[j])
-                    .sum::<f64>()
-                    .abs()
-            })
-            .fold(0.0, f64::max);
-        resolution::misfit_in_contact(&self.surface_misfits, pressures, approach)
+    /// Mortar only: the departure of body 2's surface from what the contact points see (the
+    /// polynomial through their gaps, [`SurfaceMisfit`]) that matters most under `pressures`
+    /// (MPa, one value per point), with `modulus` the contact modulus E* (MPa): a ridge,
+    /// groove or step of body 2 narrower than the spacing of body 1's contact points, which
+    /// the constraints do not see (see `resolution::misfit_in_contact` for when it matters).
+    pub fn surface_misfit_in_contact(
+        &self,
+        pressures: &[&[f64]],
+        modulus: f64,
+    ) -> Option<SurfaceMisfit> {
+        resolution::misfit_in_contact(
+            &self.surface_misfits,
+            pressures,
+            (&self.points.x, &self.points.initial_gap),
+            modulus,
+        )
     }
 
     /// Whether there are no contact points.

@@ -972,7 +972,10 @@ fn a_ridge_between_contact_points_is_reported() {
     let unresolved = Problem::with_overrides(&text, "ridge", &[]).unwrap();
     let (contact, sol) = solve(&unresolved);
     let m = contact
-        .surface_misfit_in_contact(&[&sol.pressure])
+        .surface_misfit_in_contact(
+            &[&sol.pressure],
+            wearfem::jobs::warnings::contact_modulus(&unresolved).unwrap(),
+        )
         .expect("a misfit in contact");
     // 1e-9 mm: round-off of the gaps (1e-3 mm) and of locating the ridge's top.
     assert!((m.misfit + 1e-3).abs() < 1e-9, "misfit {} mm", m.misfit);
@@ -1042,4 +1045,27 @@ fn an_unaligned_mortar_mesh_is_reported() {
         .map(|(a, b)| (a - b).abs())
         .fold(0.0, f64::max);
     assert!(largest > 0.005 * peak, "{largest} of {peak}");
+}
+
+/// The misfit check judges where the surfaces can meet (red team G): a ridge beside a Hertz
+/// zone, between body 1's contact points and in no element in contact, that the resolved mesh
+/// finds carrying 27 % of the load (its own contact: the ridge's gap is below the gap the
+/// deformation closed inside the zone) is reported; a groove outside the zone, in the open
+/// part of an element in contact, which changes nothing (red team G: 0.96 % of the peak
+/// against a resolved mesh, at the zone's other end), is not.
+#[test]
+fn a_ridge_that_makes_contact_beside_the_zone_is_reported_a_groove_in_the_open_is_not() {
+    let warned = |name: &str| {
+        let path = format!("{}/tests/problems/{name}", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(path).unwrap();
+        let p = Problem::with_overrides(&text, name, &[]).unwrap();
+        let (summary, ..) = wearfem::driver::contact(&p).unwrap();
+        summary["warnings"].as_array().unwrap().iter().any(|w| {
+            w.as_str()
+                .unwrap()
+                .contains("between body 1's contact points")
+        })
+    };
+    assert!(warned("ridge-beside-hertz-zone.toml"));
+    assert!(!warned("groove-beside-hertz-zone.toml"));
 }

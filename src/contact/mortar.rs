@@ -279,9 +279,12 @@ pub(super) fn surface_misfits(
     let mut lag = vec![0.0; p1 + 1];
     let mut misfits = Vec::new();
     for c in chain {
+        let ends = [-1.0, 1.0].map(|t| body1.mesh.point_on_edge(c.element, c.local, t));
         let mut worst = super::resolution::SurfaceMisfit {
             x: [0.0, 0.0],
             misfit: 0.0,
+            gap: 0.0,
+            element_length: (ends[1][0] - ends[0][0]).hypot(ends[1][1] - ends[0][1]),
             points: [c.first_point, c.first_point + p1],
         };
         let gap_at = |s: f64| {
@@ -314,6 +317,7 @@ pub(super) fn surface_misfits(
                 let misfit = g0 - seen;
                 if misfit.abs() > worst.misfit.abs() {
                     worst.misfit = misfit;
+                    worst.gap = g0;
                     worst.x = x;
                 }
             }

@@ -140,14 +140,16 @@ pub fn zone_warnings(
             problem.file, x[0], x[1]
         ));
     }
-    if let Some(m) = contact.surface_misfit_in_contact(pressures) {
+    let misfit =
+        contact_modulus(problem).and_then(|e| contact.surface_misfit_in_contact(pressures, e));
+    if let Some(m) = misfit {
         let what = if m.misfit < 0.0 {
             "rises"
         } else {
             "falls away"
         };
         warnings.push(format!(
-            "warning: {}: between body 1's contact points near ({:.4}, {:.4}), inside the contact, body 2's surface {what} by {:.3e} mm from what the points see (a ridge, groove or step narrower than their spacing): the contact constraints do not see it, and the pressures there can be far off. Put mesh lines of body 1 at the feature's ends, or refine body 1's contact edge there until its points resolve it (docs/problem-files.md, Meshing the contact fine enough)",
+            "warning: {}: between body 1's contact points near ({:.4}, {:.4}), where the bodies touch or can, body 2's surface {what} by {:.3e} mm from what the points see (a ridge, groove or step narrower than their spacing): the contact constraints do not see it, and the pressures there can be far off. Put mesh lines of body 1 at the feature's ends, or refine body 1's contact edge there until its points resolve it (docs/problem-files.md, Meshing the contact fine enough)",
             problem.file, m.x[0], m.x[1], m.misfit.abs()
         ));
     }
@@ -166,6 +168,34 @@ pub fn zone_warnings(
         ));
     }
     warnings
+}
+
+/// The contact modulus E* = 1/(1/E'₁ + 1/E'₂) (MPa) of the softest materials along the two
+/// contact edges, E' = E/(1 − ν²) in plane strain and E in plane stress: the stiffness with
+/// which a misfit of the surfaces turns into pressure.
+pub fn contact_modulus(problem: &Problem) -> Option<f64> {
+    let c = problem.spec.contact.as_ref()?;
+    let plane_strain = problem.spec.analysis.kind == "plane_strain";
+    let softest = |body: &str, edge: &str| -> Option<f64> {
+        let mesh = problem.mesh(problem.body_index(body).ok()?).ok()?;
+        mesh.named_edges
+            .get(edge)?
+            .iter()
+            .map(|&(e, _)| &problem.materials[mesh.elements[e].material])
+            .map(|m| {
+                if plane_strain {
+                    m.young / (1.0 - m.poisson * m.poisson)
+                } else {
+                    m.young
+                }
+            })
+            .reduce(f64::min)
+    };
+    let (e1, e2) = (
+        softest(&c.body, &c.edge)?,
+        softest(&c.target_body, &c.target_edge)?,
+    );
+    Some(1.0 / (1.0 / e1 + 1.0 / e2))
 }
 
 /// Largest sliding stroke 2u₀, as a fraction of the contact edge's length, that the model's
