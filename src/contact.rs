@@ -362,8 +362,21 @@ fn body2_traces(
                 )
                 .collect();
             points.initial_gap = gap;
-            let misfits =
-                mortar::surface_misfits(body1, chain, body2, edge2, &points.initial_gap, shape);
+            // The crown's kinks: its centre and where the cylinder meets its flanks.
+            let kinks: Vec<Point> = c.initial_shape.map_or(Vec::new(), |sh| {
+                let z = points.x.first().map_or(0.0, |x| x[1]);
+                [-1.0, 0.0, 1.0]
+                    .map(|k| [sh.center_x + k * sh.radius, z])
+                    .to_vec()
+            });
+            let misfits = mortar::surface_misfits(
+                body1,
+                chain,
+                body2,
+                edge2,
+                &points.initial_gap,
+                (shape, &kinks),
+            );
             Ok((m.traces, misfits))
         }
         other => Err(spec::unknown_discretisation(problem, other)),

@@ -1069,3 +1069,39 @@ fn a_ridge_that_makes_contact_beside_the_zone_is_reported_a_groove_in_the_open_i
     assert!(warned("ridge-beside-hertz-zone.toml"));
     assert!(!warned("groove-beside-hertz-zone.toml"));
 }
+
+/// Two more features the misfit scan must not miss (red team H): a crown narrower than the
+/// points' spacing (`contact.initial_shape` of radius 0.02 mm between two of punch-b40's
+/// points: the punch stands on a 20 µm bump; its kinks now split the sampled pieces), and a
+/// step whose fall in the open part of an element hid its rise inside the zone (the worst
+/// rise and the worst fall are now kept apart).
+#[test]
+fn a_narrow_crown_and_a_step_at_the_zone_end_are_reported() {
+    let warned = |p: &Problem| {
+        let (summary, ..) = wearfem::driver::contact(p).unwrap();
+        summary["warnings"].as_array().unwrap().iter().any(|w| {
+            w.as_str()
+                .unwrap()
+                .contains("between body 1's contact points")
+        })
+    };
+    let text = wearfem::examples::example("punch-b40").unwrap().replace(
+        "discretisation = \"collocation\"",
+        "discretisation = \"mortar\"",
+    );
+    let plain = Problem::with_overrides(&text, "punch", &[]).unwrap();
+    assert!(!warned(&plain));
+    let crown =
+        Override::parse("contact.initial_shape={ radius = 0.02, center_x = 1101.0 }").unwrap();
+    assert!(warned(
+        &Problem::with_overrides(&text, "punch", &[crown]).unwrap()
+    ));
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/problems/side-step-in-element.toml"
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(warned(
+        &Problem::with_overrides(&text, "step", &[]).unwrap()
+    ));
+}

@@ -150,25 +150,35 @@ pub(super) fn break_points(
     body2: &ElasticBody,
     edges2: &[(usize, usize)],
 ) -> Vec<f64> {
+    let ends = edges2
+        .iter()
+        .flat_map(|&(e, l)| [-1.0, 1.0].map(|t2| body2.mesh.point_on_edge(e, l, t2)));
+    breaks_at(body1, c, ends)
+}
+
+/// Parameters s ∈ (−1, 1) of body 1's element where the normal line passes through one of
+/// `points`, with −1 and 1, sorted.
+fn breaks_at(
+    body1: &ElasticBody,
+    c: &ChainElement,
+    points: impl Iterator<Item = crate::geometry::Point>,
+) -> Vec<f64> {
     let point = |s: f64| {
         let t = if c.reversed { -s } else { s };
         let (tangent, _) = body1.mesh.edge_frame(c.element, c.local, t);
         (body1.mesh.point_on_edge(c.element, c.local, t), tangent)
     };
     let mut breaks = vec![-1.0, 1.0];
-    for &(e, l) in edges2 {
-        for t2 in [-1.0, 1.0] {
-            let y = body2.mesh.point_on_edge(e, l, t2);
-            let side = |s: f64| {
-                let (x, tan) = point(s);
-                (y[0] - x[0]) * tan[0] + (y[1] - x[1]) * tan[1]
-            };
-            let (fa, fb) = (side(-1.0), side(1.0));
-            if fa * fb >= 0.0 {
-                continue;
-            }
-            breaks.push(crate::geometry::bisect(side, -1.0, 1.0, 60));
+    for y in points {
+        let side = |s: f64| {
+            let (x, tan) = point(s);
+            (y[0] - x[0]) * tan[0] + (y[1] - x[1]) * tan[1]
+        };
+        let (fa, fb) = (side(-1.0), side(1.0));
+        if fa * fb >= 0.0 {
+            continue;
         }
+        breaks.push(crate::geometry::bisect(side, -1.0, 1.0, 60));
     }
     breaks.sort_by(f64::total_cmp);
     // Ends shared by neighbouring elements of body 2 project twice; a piece of length ~0 adds
@@ -260,7 +270,8 @@ pub(super) fn mortar_traces(
 /// Where body 2's surface departs from what the constraints see: on each of body 1's
 /// contact elements the largest |g₀(x) − Σ_b N_b(x) g_b| over the Gauss points of the pieces
 /// between body 2's element ends (so that every feature made of body 2's elements is
-/// sampled), g_b the constraints' point gaps `point_gap` (mm). A ridge or groove of body 2
+/// sampled), g_b the constraints' point gaps `point_gap` (mm), g₀ including `shape` (mm) with
+/// its kinks at `shape_kinks`. A ridge or groove of body 2
 /// narrower than the spacing of body 1's contact points falls between them, and the
 /// constraints see none of it (red team D: a ridge 1 µm high and 0.2 mm wide between two
 /// points carried 16 % of a flat punch's load in a mesh that resolves it, and nothing in one
@@ -271,7 +282,10 @@ pub(super) fn surface_misfits(
     body2: &ElasticBody,
     edges2: &[(usize, usize)],
     point_gap: &[f64],
-    shape: impl Fn(crate::geometry::Point) -> f64,
+    (shape, shape_kinks): (
+        impl Fn(crate::geometry::Point) -> f64,
+        &[crate::geometry::Point],
+    ),
 ) -> Vec<super::resolution::SurfaceMisfit> {
     let p1 = body1.dofs.p;
     let nodes = gauss_lobatto(p1 + 1).points;
@@ -280,13 +294,17 @@ pub(super) fn surface_misfits(
     let mut misfits = Vec::new();
     for c in chain {
         let ends = [-1.0, 1.0].map(|t| body1.mesh.point_on_edge(c.element, c.local, t));
-        let mut worst = super::resolution::SurfaceMisfit {
+        // The worst rise and the worst fall: which one matters depends on where the bodies
+        // touch, so neither may hide the other (red team H: a fall beside the zone hid a rise
+        // inside it).
+        let none = super::resolution::SurfaceMisfit {
             x: [0.0, 0.0],
             misfit: 0.0,
             gap: 0.0,
             element_length: (ends[1][0] - ends[0][0]).hypot(ends[1][1] - ends[0][1]),
             points: [c.first_point, c.first_point + p1],
         };
+        let mut worst = [none, none];
         let gap_at = |s: f64| {
             let t = if c.reversed { -s } else { s };
             let x = body1.mesh.point_on_edge(c.element, c.local, t);
@@ -304,7 +322,12 @@ pub(super) fn surface_misfits(
                 seen_at_nodes[b] = g;
             }
         }
-        let breaks = break_points(body1, c, body2, edges2);
+        // Body 2's element ends and the initial shape's own kinks (a crown narrower than the
+        // points' spacing, red team H) split the element into smooth pieces.
+        let mut breaks = break_points(body1, c, body2, edges2);
+        breaks.extend(breaks_at(body1, c, shape_kinks.iter().copied()));
+        breaks.sort_by(f64::total_cmp);
+        breaks.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
         for piece in breaks.windows(2) {
             let half = 0.5 * (piece[1] - piece[0]);
             for &r in &rule.points {
@@ -315,16 +338,15 @@ pub(super) fn surface_misfits(
                 lagrange(&nodes, s, &mut lag);
                 let seen: f64 = (0..=p1).map(|b| lag[b] * seen_at_nodes[b]).sum();
                 let misfit = g0 - seen;
-                if misfit.abs() > worst.misfit.abs() {
-                    worst.misfit = misfit;
-                    worst.gap = g0;
-                    worst.x = x;
+                let w = &mut worst[usize::from(misfit > 0.0)];
+                if misfit.abs() > w.misfit.abs() {
+                    w.misfit = misfit;
+                    w.gap = g0;
+                    w.x = x;
                 }
             }
         }
-        if worst.misfit.abs() > 1e-12 {
-            misfits.push(worst);
-        }
+        misfits.extend(worst.into_iter().filter(|w| w.misfit.abs() > 1e-12));
     }
     misfits
 }

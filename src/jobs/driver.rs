@@ -200,7 +200,10 @@ pub fn check_contact_probes(
             .iter()
             .map(|&p| dist(p, probe.at))
             .fold(f64::INFINITY, f64::min);
-        if nearest > 0.5 * spacing * (1.0 + 1e-9) {
+        // 5 % above half the chord: on an arc a probe midway between two points lies
+        // 1/cos(θ/4) times half their chord from each (red team H: the brake's crown probe
+        // at p = 3, 9.5191 against 9.516 mm, was refused).
+        if nearest > 0.5 * spacing * 1.05 {
             return Err(problem.error(
                 format!("{key}.at"),
                 format!(

@@ -149,7 +149,7 @@ pub fn zone_warnings(
             "falls away"
         };
         warnings.push(format!(
-            "warning: {}: between body 1's contact points near ({:.4}, {:.4}), where the bodies touch or can, body 2's surface {what} by {:.3e} mm from what the points see (a ridge, groove or step narrower than their spacing): the contact constraints do not see it, and the pressures there can be far off. Put mesh lines of body 1 at the feature's ends, or refine body 1's contact edge there until its points resolve it (docs/problem-files.md, Meshing the contact fine enough)",
+            "warning: {}: between body 1's contact points near ({:.4}, {:.4}), where the bodies touch or can, body 2's surface {what} by {:.3e} mm from what the points see (a ridge, groove or step narrower than their spacing, or a curvature that body 1's elements do not follow, as linear ones do not): the contact constraints do not see it, and the pressures there can be far off. Put mesh lines of body 1 at the feature's ends, or refine body 1's contact edge there until its points resolve it (docs/problem-files.md, Meshing the contact fine enough)",
             problem.file, m.x[0], m.x[1], m.misfit.abs()
         ));
     }
