@@ -47,7 +47,12 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
             .map_err(|e| problem.error("bodies", e.to_string()))?;
         energy += strain_energy(&load, &u);
         let strain = super::validity::largest_strain(&body, &u);
-        warnings.extend(super::validity::strain_warning(problem, &body.name, strain));
+        warnings.extend(super::validity::strain_warning(
+            problem,
+            &body.name,
+            strain,
+            "its loads",
+        ));
         dofs += body.info.total_dofs;
         condensed += body.info.condensed_dofs;
         for (name, probe) in &problem.spec.probes {

@@ -40,10 +40,16 @@ pub fn largest_strain(body: &ElasticBody, u: &Displacement) -> (f64, Point) {
     largest
 }
 
-/// The warning for `body` named `name` when its largest strain exceeds [`STRAIN_LIMIT`].
-pub fn strain_warning(problem: &Problem, name: &str, (strain, at): (f64, Point)) -> Option<String> {
+/// The warning for `body` named `name` when its largest strain exceeds [`STRAIN_LIMIT`];
+/// `under` says what strains it ("its loads", "the first contact solve").
+pub fn strain_warning(
+    problem: &Problem,
+    name: &str,
+    (strain, at): (f64, Point),
+    under: &str,
+) -> Option<String> {
     (strain.is_nan() || strain > STRAIN_LIMIT).then(|| format!(
-        "warning: {}: body \"{name}\" is strained by {:.3e} ({:.0} %) at ({:.4}, {:.4}) under the first contact solve or the loads; linear elasticity assumes small strains, so these results are outside its range (they err by about as much). Check the Young's moduli and the loads (units: MPa and mm)",
+        "warning: {}: body \"{name}\" is strained by {:.3e} ({:.0} %) at ({:.4}, {:.4}) under {under}; linear elasticity assumes small strains, so these results are outside its range (they err by about as much). Check the Young's moduli and the loads (units: MPa and mm)",
         problem.file,
         strain,
         100.0 * strain,
@@ -138,7 +144,12 @@ pub fn contact_strain_warnings(
     [(&body1, &fields[0]), (&body2, &fields[1])]
         .iter()
         .filter_map(|(body, field)| {
-            strain_warning(problem, &body.name, largest_strain(body, &field.elastic))
+            strain_warning(
+                problem,
+                &body.name,
+                largest_strain(body, &field.elastic),
+                "the first contact solve",
+            )
         })
         .collect()
 }
