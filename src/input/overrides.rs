@@ -389,25 +389,55 @@ pub fn parse_spec(
             message: one_line(e.message()),
         }
     };
-    // The file is read on its own first, so that its own errors keep their line numbers.
-    let alone = toml::from_str::<ProblemSpec>(text);
     if overrides.is_empty() {
-        return alone.map_err(file_error);
+        return toml::from_str::<ProblemSpec>(text).map_err(file_error);
     }
     let mut table: toml::Table = toml::from_str(text).map_err(file_error)?;
-    // A file may lack what its overrides supply (a template completed by `--set`), so a
-    // failed reading is charged to the file until an override changes it, then to that
-    // override: the reading is repeated after each, and the last one must succeed.
-    let mut failure: Option<(Option<&Override>, toml::de::Error)> = alone.err().map(|e| (None, e));
-    let mut spec = None;
     for o in overrides {
         apply(&mut table, o).map_err(|message| ProblemError {
             file: file.into(),
             key: o.key.clone(),
             message,
         })?;
+    }
+    // Read once with every override applied; only a failed reading is worth the work of
+    // finding whom to charge (a study builds hundreds of variants, each read once).
+    match toml::Value::Table(table).try_into::<ProblemSpec>() {
+        Ok(spec) => Ok(spec),
+        Err(_) => Err(charge_failure(text, file, overrides, file_error)),
+    }
+}
+
+/// The error of a file whose reading with `overrides` applied fails: charged to the file, or
+/// to the override after which the reading failed for good.
+fn charge_failure(
+    text: &str,
+    file: &str,
+    overrides: &[Override],
+    file_error: impl Fn(toml::de::Error) -> ProblemError,
+) -> ProblemError {
+    // The file is read on its own first, so that its own errors keep their line numbers.
+    let alone = toml::from_str::<ProblemSpec>(text);
+    let mut table: toml::Table = match toml::from_str(text) {
+        Ok(table) => table,
+        Err(e) => return file_error(e),
+    };
+    // A file may lack what its overrides supply (a template completed by `--set`), so a
+    // failed reading is charged to the file until an override changes it, then to that
+    // override: the reading is repeated after each, and the last one fails (else the
+    // caller would not be here).
+    let mut failure: Option<(Option<&Override>, toml::de::Error)> = alone.err().map(|e| (None, e));
+    for o in overrides {
+        if apply(&mut table, o).is_err() {
+            // Not reached: the caller applied every override without error.
+            return ProblemError {
+                file: file.into(),
+                key: o.key.clone(),
+                message: "could not be applied".into(),
+            };
+        }
         match toml::Value::Table(table.clone()).try_into::<ProblemSpec>() {
-            Ok(read) => (spec, failure) = (Some(read), None),
+            Ok(_) => failure = None,
             Err(e) => {
                 let same = failure
                     .as_ref()
@@ -415,12 +445,11 @@ pub fn parse_spec(
                 if !same {
                     failure = Some((Some(o), e));
                 }
-                spec = None;
             }
         }
     }
     match failure {
-        Some((Some(o), e)) => Err(ProblemError {
+        Some((Some(o), e)) => ProblemError {
             file: file.into(),
             // The reader stops at its first error, so an override that mends one error of the
             // file shows the next: charge the override only if the error is at its key
@@ -430,14 +459,14 @@ pub fn parse_spec(
                 _ => o.key.clone(),
             },
             message: one_line(e.message()),
-        }),
-        Some((None, e)) => Err(file_error(e)),
-        // Without a failure the last reading succeeded.
-        None => spec.ok_or_else(|| ProblemError {
+        },
+        Some((None, e)) => file_error(e),
+        // Not reached: the last reading failed.
+        None => ProblemError {
             file: file.into(),
             key: "(file)".into(),
             message: "could not be read".into(),
-        }),
+        },
     }
 }
 

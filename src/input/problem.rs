@@ -12,6 +12,8 @@ pub use crate::schema::*;
 
 mod meshes;
 
+use std::sync::Arc;
+
 /// Largest coordinate, length or radius accepted, mm: a kilometre, beyond which double
 /// precision no longer resolves elastic displacements of ordinary parts.
 pub const MAX_COORDINATE: f64 = 1e6;
@@ -55,6 +57,9 @@ pub struct Problem {
     pub discretisation: Discretisation,
     /// Materials in `spec.materials` order.
     pub materials: Vec<Material>,
+    /// The bodies' meshes, built once on validation (see [`Problem::mesh`]); built again
+    /// if `spec` has been changed since.
+    meshes: Option<Arc<meshes::BuiltMeshes>>,
 }
 
 impl Problem {
@@ -185,17 +190,19 @@ impl Problem {
                 return Err(err("contact.initial_shape", format!("radius must be a positive length of at most {MAX_COORDINATE:e} mm and center_x within ±{MAX_COORDINATE:e} mm, got radius {} and center_x {}", shape.radius, shape.center_x)));
             }
         }
-        let problem = Problem {
+        let mut problem = Problem {
             file: file.into(),
             analysis,
             discretisation: Discretisation { p: a.p, space },
             materials,
             spec,
+            meshes: None,
         };
+        let built = meshes::BuiltMeshes::of(&problem)?;
         for b in 0..problem.spec.bodies.len() {
-            let mesh = problem.mesh(b)?;
-            problem.check_traction_windows(b, &mesh)?;
+            problem.check_traction_windows(b, built.mesh(b))?;
         }
+        problem.meshes = Some(built);
         for (name, probe) in &problem.spec.probes {
             problem.body_index(&probe.body).map_err(|_| {
                 problem.error(

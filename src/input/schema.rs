@@ -62,7 +62,7 @@ impl OneOrTwo {
 }
 
 /// Mesh lines along one block direction: a number of equal divisions or explicit parameters.
-#[derive(Clone, Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(
     untagged,
     expecting = "a whole number of equal divisions, or a list of rising parameters from 0 to 1"
@@ -75,7 +75,7 @@ pub enum LinesSpec {
 }
 
 /// An arc edge of a block.
-#[derive(Clone, Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct ArcSpec {
     /// Block edge 0..=3 (0: c0→c1, 1: c1→c2, 2: c2→c3, 3: c3→c0).
@@ -86,7 +86,7 @@ pub struct ArcSpec {
 }
 
 /// Names of block edges.
-#[derive(Clone, Debug, Default, Deserialize)]
+#[derive(Clone, Debug, Default, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct EdgeNames {
     /// Edge 0 (c0→c1).
@@ -100,7 +100,7 @@ pub struct EdgeNames {
 }
 
 /// `[[bodies.blocks]]`.
-#[derive(Clone, Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct BlockSpec {
     /// Four corners [x, z] (mm), counter-clockwise.
