@@ -1,6 +1,7 @@
 //! Benchmarks of the finite-element set-up of the built-in example punch-b40 (reference model
 //! of Example 1, p = 8): `elastic_setup` (target < 0.05 s) and `flexibility` (target
-//! < 0.05 s). Run with `cargo bench --bench setup`; figures in docs/performance.md.
+//! < 0.05 s), and what a study pays per variant before solving it (`variant_build`). Run with
+//! `cargo bench --bench setup`; figures in docs/performance.md.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
@@ -75,6 +76,40 @@ fn flexibility(c: &mut Criterion) {
     });
 }
 
+/// `variant_build`: one variant of a study of punch-b40 read, validated and checked as
+/// `wearfem sweep` and Python's `study()` do (`Problem::with_overrides` with friction and pin,
+/// then `sweep::check_settings`); its meshes are those of the variants before (same
+/// geometry). `variant_build_new_geometry`: the same with the punch's lowest block cut into
+/// another number of rows each time, so that every variant builds its meshes.
+fn variant_build(c: &mut Criterion) {
+    use wearfem::overrides::{parse_value, Override};
+    use wearfem::sweep::{check_settings, Job};
+    let text = wearfem::examples::example("punch-b40").unwrap();
+    let set = |key: &str, value: &str| Override::new(key, parse_value(value)).unwrap();
+    let overrides = [
+        set("contact.friction", "0.2"),
+        set("plate.pin", "[1100.0, 120.0]"),
+    ];
+    let build = |overrides: &[Override]| {
+        let p = Problem::with_overrides(text, "punch-b40", overrides).unwrap();
+        check_settings(&p, Job::Steady).unwrap();
+        p
+    };
+    c.bench_function("variant_build", |b| {
+        b.iter(|| black_box(build(black_box(&overrides))))
+    });
+    let mut rows = 0;
+    c.bench_function("variant_build_new_geometry", |b| {
+        b.iter(|| {
+            // Nine row counts, more than the four sets of meshes a process keeps.
+            rows = rows % 9 + 1;
+            let mut with_rows = overrides.to_vec();
+            with_rows.push(set("bodies[0].blocks[0].v", &rows.to_string()));
+            black_box(build(&with_rows))
+        })
+    });
+}
+
 // Small samples and short measurements: the whole file runs in well under a minute.
 criterion_group! {
     name = benches;
@@ -82,6 +117,6 @@ criterion_group! {
         .sample_size(20)
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(4));
-    targets = elastic_setup, flexibility
+    targets = elastic_setup, flexibility, variant_build
 }
 criterion_main!(benches);

@@ -7,6 +7,12 @@ one of processes (2 workers, one thread each), and the command line's `wearfem s
 docs/performance.md. The overhead per task is the wall time the executor spends beyond the
 variants' own solve time, per variant, relative to a variant's mean solve time:
 (workers · wall − Σ seconds) / Σ seconds.
+
+This virtual machine's speed drifts by ±15 % from one second to the next (twelve serial
+studies in a row ran at 46 to 62 variants per second), more than the differences measured
+here. So each executor is timed in ROUNDS pairs, a serial study right before each of its own
+runs, and the table gives the median of the paired ratios (and their range): a slow spell
+slows both runs of a pair alike.
 """
 
 import os
@@ -21,6 +27,7 @@ import numpy as np
 import wearfem
 
 WORKERS = 2
+ROUNDS = 5
 punch = wearfem.Problem.builtin("punch-b40")
 grid = {
     "contact.friction": [round(float(x), 3) for x in np.linspace(0.05, 0.3, 8)],
@@ -29,21 +36,70 @@ grid = {
 n = 64
 
 
-def timed(label, workers, executor=None):
+def timed(executor=None):
+    """One study: (wall s, Σ of the variants' own seconds, table)."""
     start = time.perf_counter()
     table = wearfem.study(punch, grid, executor=executor)
     wall = time.perf_counter() - start
-    own = float(np.sum(table["seconds"]))
-    overhead = (workers * wall - own) / own
-    return label, n / wall, overhead, table, own / n, own / wall
+    return wall, float(np.sum(table["seconds"])), table
+
+
+def paired(label, workers, run):
+    """ROUNDS pairs of (serial study, `run()`): the row of the table. `run` returns (wall,
+    Σ seconds or None, table or None)."""
+    ratios, rates, overheads, means, tables = [], [], [], [], []
+    for _ in range(ROUNDS):
+        serial_wall, _, serial_table = timed()
+        wall, own, table = run()
+        ratios.append(serial_wall / wall)
+        rates.append(n / wall)
+        if own is not None:
+            overheads.append((workers * wall - own) / own)
+            means.append(own / n)
+            tables.append(table)
+    for table in tables:
+        # Every executor gives the serial results exactly.
+        assert list(table["peak_p_plus"]) == list(serial_table["peak_p_plus"]), label
+    median = float(np.median(ratios))
+    cells = [
+        label,
+        f"{np.median(rates):.1f}",
+        f"{median:.2f}× ({min(ratios):.2f}–{max(ratios):.2f})",
+        f"{1e3 * np.median(means):.1f}" if means else "",
+        f"{100 * np.median(overheads):.0f} %" if overheads else "",
+    ]
+    print("| " + " | ".join(cells) + " |", flush=True)
+
+
+def sweep_run(binary):
+    """`wearfem sweep -j WORKERS` over the same grid, as a `paired` run."""
+
+    def run():
+        with tempfile.TemporaryDirectory() as out:
+            sets = ["--set", f"contact.friction={grid['contact.friction']}", "--set", f"plate.pin={grid['plate.pin']}"]
+            start = time.perf_counter()
+            proc = subprocess.run(
+                [binary, "sweep", "punch-b40", *sets, "--steady", "-j", str(WORKERS), "--out", out],
+                capture_output=True,
+                text=True,
+            )
+            wall = time.perf_counter() - start
+            # Exit 1 when a variant does not converge; sweep.json is written all the same.
+            assert os.path.exists(os.path.join(out, "sweep.json")), proc.stderr
+        return wall, None, None
+
+    return run
 
 
 def main():
-    rows = []
+    binary = sys.argv[1] if len(sys.argv) > 1 else "target/release/wearfem"
     wearfem.study(punch, {"contact.friction": [0.2]})  # warm-up
-    rows.append(timed("serial Python", 1))
+    print(f"{ROUNDS} pairs per row, medians (range of the paired ratios)")
+    print("| how | variants/s | vs serial, paired | mean variant (ms) | overhead per task |")
+    print("|---|---|---|---|---|")
+    paired("serial Python", 1, lambda: timed())
     with ThreadPoolExecutor(WORKERS) as pool:
-        rows.append(timed(f"thread pool ({WORKERS} threads)", WORKERS, pool))
+        paired(f"thread pool ({WORKERS} threads)", WORKERS, lambda: timed(pool))
     from distributed import Client, LocalCluster
 
     # Dask's two kinds of local cluster: threads in this process (the Dask documentation's
@@ -62,32 +118,9 @@ def main():
     ]:
         with dask.config.set(config), LocalCluster(dashboard_address=None, **layout) as cluster, Client(cluster) as client:
             wearfem.study(punch, {"contact.friction": [0.2, 0.25]}, executor=client)  # workers warm
-            rows.append(timed(label, WORKERS, client))
-
-    serial = rows[0][3]
-    for label, _, _, table, _, _ in rows[1:]:
-        assert list(table["peak_p_plus"]) == list(serial["peak_p_plus"]), label
-
-    binary = sys.argv[1] if len(sys.argv) > 1 else "target/release/wearfem"
-    with tempfile.TemporaryDirectory() as out:
-        sets = ["--set", f"contact.friction={grid['contact.friction']}", "--set", f"plate.pin={grid['plate.pin']}"]
-        start = time.perf_counter()
-        proc = subprocess.run(
-            [binary, "sweep", "punch-b40", *sets, "--steady", "-j", str(WORKERS), "--out", out],
-            capture_output=True,
-            text=True,
-        )
-        wall = time.perf_counter() - start
-        # Exit 1 when a variant does not converge; sweep.json is written all the same.
-        assert os.path.exists(os.path.join(out, "sweep.json")), proc.stderr
-
-    print(f"load average after: {os.getloadavg()[0]:.1f}; mean variant {np.mean(serial['seconds']) * 1e3:.1f} ms")
-    print("| how | variants/s | vs serial | mean variant (ms) | variants at once | overhead per task |")
-    print("|---|---|---|---|---|---|")
-    base = rows[0][1]
-    for label, rate, overhead, _, mean, overlap in rows:
-        print(f"| {label} | {rate:.1f} | {rate / base:.2f}× | {1e3 * mean:.1f} | {overlap:.2f} | {100 * overhead:.0f} % |")
-    print(f"| `wearfem sweep -j {WORKERS}` (process start and output files included) | {n / wall:.1f} | {n / wall / base:.2f}× | | | |")
+            paired(label, WORKERS, lambda: timed(client))
+    paired(f"`wearfem sweep -j {WORKERS}` (process start and output files included)", WORKERS, sweep_run(binary))
+    print(f"load average after: {os.getloadavg()[0]:.1f}")
 
 
 # Dask starts its worker processes by re-importing this file: only run when executed.
