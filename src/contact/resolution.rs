@@ -94,6 +94,10 @@ pub struct CoarseZone {
     /// Which mesh does not resolve the zone: 2 (body 2 coarser than body 1 where the zone
     /// ends) or 1 (body 1's own element at the zone's end is long against the zone).
     pub body: usize,
+    /// Body 1's degree over body 2's (1 when body 2's is as high or higher): body 2's element
+    /// lengths count this many times longer against body 1's, and its elements across the
+    /// zone this many times fewer.
+    pub partner_degree_ratio: f64,
 }
 
 /// Arc length of an element edge between parameters a and b (8-point Gauss: exact for
@@ -267,6 +271,7 @@ fn assess(x: &[Point], cells: &[PointResolution], ends: [usize; 2]) -> Option<Co
         partner_element_length,
         element_length,
         body,
+        partner_degree_ratio: cells[a].partner_degree_ratio,
     })
 }
 

@@ -63,12 +63,13 @@ pub fn target_mesh_note(problem: &Problem, contact: &CondensedContact) -> Option
 
 /// `coarse_partner_zones` of summary.json: one object per contact zone that body 2's mesh does
 /// not resolve (first and last point index and position, mm; body 2's elements across it;
-/// body 2's and body 1's element lengths at its worse end, mm); an empty list when none.
+/// body 2's and body 1's element lengths at its worse end, mm; body 1's degree over body
+/// 2's, at least 1); an empty list when none.
 pub fn coarse_zones_json(zones: &[crate::contact::CoarseZone]) -> Value {
     Value::Array(
         zones
             .iter()
-            .map(|z| json!({ "points": z.points, "from": numbers(&z.from), "to": numbers(&z.to), "partner_elements_across": number(z.partner_elements_across), "partner_element_length": number(z.partner_element_length), "element_length": number(z.element_length), "body": z.body }))
+            .map(|z| json!({ "points": z.points, "from": numbers(&z.from), "to": numbers(&z.to), "partner_elements_across": number(z.partner_elements_across), "partner_element_length": number(z.partner_element_length), "element_length": number(z.element_length), "body": z.body, "partner_degree_ratio": number(z.partner_degree_ratio) }))
             .collect(),
     )
 }
@@ -162,8 +163,28 @@ pub fn zone_warnings(
             ));
             continue;
         }
+        // With a lower degree on body 2 its elements are compared as if that many times
+        // longer: say so, or "body 2's 5 mm, coarser than body 1's 7.5 mm" reads as nonsense.
+        let ratio = z.partner_degree_ratio;
+        let (degrees, counted, raise) = if ratio > 1.0 {
+            let times = if ratio.fract() == 0.0 {
+                format!("{ratio:.0}")
+            } else {
+                format!("{ratio:.2}")
+            };
+            (
+                format!(
+                    " (of a degree {times} times lower: as coarse as one of {:.4} mm of body 1's degree)",
+                    z.partner_element_length * ratio
+                ),
+                ", counted at body 1's degree,",
+                ", or raise its degree",
+            )
+        } else {
+            (String::new(), "", "")
+        };
         warnings.push(format!(
-            "warning: {}: the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 2 of {:.4} mm, coarser than body 1's {:.4} mm there, and only {:.1} of body 2's elements span it: the pressure near the zone's ends can be off by a few percent of its peak (body 2's discretisation error). Refine body 2 there to no coarser than body 1, or to about {} elements across the zone, or put one of its mesh lines at the zone's end (docs/validation.md, Mortar contact)",
+            "warning: {}: the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 2 of {:.4} mm{degrees}, coarser than body 1's {:.4} mm there, and only {:.1} of body 2's elements{counted} span it: the pressure near the zone's ends can be off by a few percent of its peak (body 2's discretisation error). Refine body 2 there to no coarser than body 1{raise}, or to about {} elements across the zone, or put one of its mesh lines at the zone's end (docs/validation.md, Mortar contact)",
             problem.file, z.from[0], z.from[1], z.to[0], z.to[1], z.partner_element_length, z.element_length, z.partner_elements_across, crate::contact::resolution::RESOLVED_ACROSS
         ));
     }
