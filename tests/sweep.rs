@@ -527,3 +527,41 @@ fn a_title_axis_leaves_the_study_the_file_s_title() {
     assert_eq!(json(&dir.join("sweep.json"))["title"], file.as_str());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_template_completed_by_the_study_s_axis_is_swept() {
+    // A file without `analysis.p`, which every variant supplies: each variant reads as the
+    // single command reads it (a red team's sweep solved both variants, then refused the file
+    // alone for its title, exit 2).
+    let dir = scratch("template");
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = wearfem::examples::example("punch-b40").unwrap();
+    let template = text.replacen("\np = 8", "\n", 1);
+    assert_ne!(template, text, "the example sets analysis.p");
+    let file = dir.join("template.toml");
+    std::fs::write(&file, &template).unwrap();
+    let out = dir.join("out");
+    let (code, _, err) = wearfem(&[
+        "sweep",
+        file.to_str().unwrap(),
+        "--set",
+        "analysis.p=[6, 8]",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let study = json(&out.join("sweep.json"));
+    let title = variant("punch-b40", &[]).spec.title;
+    assert_eq!(study["title"], title.as_str());
+    assert_eq!(study["variants"].as_array().unwrap().len(), 2);
+    // Alone, the template is refused, naming the missing key.
+    let (code, _, err) = wearfem(&[
+        "steady",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("analysis.p"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -179,11 +179,23 @@ impl PyProblem {
 
 #[pymethods]
 impl PyProblem {
-    /// Parse and validate problem-file text; `file` names it in error messages.
+    /// Parse problem-file text, apply `overrides` ({dotted key: value}, as `--set`) and
+    /// validate the result; `file` names it in error messages. The file alone need not be
+    /// complete: a template may leave to the overrides what they set.
     #[staticmethod]
-    #[pyo3(signature = (text, file = "<string>".to_string()))]
-    fn from_toml(py: Python<'_>, text: String, file: String) -> PyResult<Self> {
-        PyProblem::build(py, text, file, Vec::new())
+    #[pyo3(signature = (text, file = "<string>".to_string(), overrides = None))]
+    fn from_toml(
+        py: Python<'_>,
+        text: String,
+        file: String,
+        overrides: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Self> {
+        let overrides = match overrides {
+            Some(values) => overrides_from(py, values)?,
+            None => Vec::new(),
+        };
+        wearfem::overrides::check_together(&overrides).map_err(|e| problem_error(py, &e))?;
+        PyProblem::build(py, text, file, overrides)
     }
 
     /// Restore from (text, file, [(key, TOML value text)]): unpickling, for process pools and

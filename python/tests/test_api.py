@@ -37,6 +37,32 @@ def test_a_misspelt_key_in_a_file_is_named_without_its_line():
     assert (again.key, again.line, str(again)) == (e.value.key, line, str(e.value))
 
 
+def test_a_template_is_completed_by_the_overrides_it_is_read_with(punch, tmp_path):
+    """A file that leaves ``analysis.p`` to its overrides, as ``--set`` may (red team: Python
+    could not read such a file at all, and blamed a bad override on the missing key)."""
+    text = wearfem.Problem.builtin("punch-b40").to_toml()
+    template = _re_sub_line(text, "p = 8", "")
+    path = tmp_path / "template.toml"
+    path.write_text(template)
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.Problem.from_file(path)
+    assert e.value.key == "analysis.p"
+    completed = wearfem.Problem.from_file(path, overrides={"analysis.p": 8})
+    assert completed.steady().p_plus.tolist() == punch.steady().p_plus.tolist()
+    # Variants of it, as a study makes them.
+    assert completed.with_overrides({"contact.friction": 0.1}).title == punch.title
+    # A bad override is named, not the key it was meant to supply.
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.Problem.from_toml(template, "template.toml", overrides={"analysis.p": 8.5})
+    assert e.value.key == "analysis.p" and e.value.line is None
+
+
+def _re_sub_line(text, line, by):
+    lines = text.splitlines()
+    assert line in lines, line
+    return "\n".join(by if l == line else l for l in lines) + "\n"
+
+
 def test_bad_value_type_raises_with_key(punch):
     with pytest.raises(wearfem.ProblemError) as e:
         punch.with_overrides({"contact.friction": "lots"})

@@ -313,13 +313,22 @@ class Problem:
         return f"<wearfem.Problem {self.file!r}{' with ' + sets if sets else ''}>"
 
     @classmethod
-    def from_toml(cls, text: str, file: str = "<string>") -> "Problem":
-        """Parse and validate problem-file text; ``file`` names it in error messages."""
-        return cls(_Problem.from_toml(text, file))
+    def from_toml(
+        cls, text: str, file: str = "<string>", overrides: Optional[Mapping[str, Any]] = None
+    ) -> "Problem":
+        """Parse and validate problem-file text; ``file`` names it in error messages.
+
+        ``overrides`` ({dotted key: value}, as :meth:`with_overrides`) are applied before the
+        problem is validated, as ``--set`` on the command line: a template file that leaves
+        keys to them (``analysis.p``, say) is complete only with them, and cannot be read
+        without."""
+        values = None if overrides is None else {k: _plain(v) for k, v in dict(overrides).items()}
+        return cls(_Problem.from_toml(text, file, values))
 
     @classmethod
-    def from_file(cls, path) -> "Problem":
-        """Read and validate the problem file at ``path``."""
+    def from_file(cls, path, overrides: Optional[Mapping[str, Any]] = None) -> "Problem":
+        """Read and validate the problem file at ``path``, with ``overrides`` applied first
+        (see :meth:`from_toml`)."""
         path = str(path)
         try:
             with open(path, encoding="utf-8") as f:
@@ -328,7 +337,7 @@ class Problem:
             raise WearfemError(path, "(file)", f"cannot read: {e.strerror}") from None
         except UnicodeDecodeError as e:
             raise WearfemError(path, "(file)", f"cannot read: not UTF-8 text (byte {e.start})") from None
-        return cls.from_toml(text, path)
+        return cls.from_toml(text, path, overrides)
 
     @classmethod
     def from_dict(cls, d: Mapping[str, Any], file: str = "<dict>") -> "Problem":

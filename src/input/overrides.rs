@@ -455,7 +455,12 @@ fn charge_failure(
             // file shows the next: charge the override only if the error is at its key
             // (red team 21: a typo in [contact] was blamed on `--set analysis.p=8`).
             key: match key_in(&table, e.message()) {
-                Some(key) if !concerns(&key, &o.key) => key,
+                // An error of the file itself, with its line when the file writes the key
+                // (red team: the line was lost when an override mended another error).
+                Some(key) if !concerns(&key, &o.key) => match located::line_of(text, &key) {
+                    Some(line) => format!("{key} (line {line})"),
+                    None => key,
+                },
                 _ => o.key.clone(),
             },
             message: one_line(e.message()),
@@ -468,6 +473,16 @@ fn charge_failure(
             message: "could not be read".into(),
         },
     }
+}
+
+/// The `title` of a problem file's text ("" where it has none or cannot be read), without
+/// reading the rest into the schema: the title of a template whose other keys come from
+/// overrides.
+pub fn file_title(text: &str) -> String {
+    toml::from_str::<toml::Table>(text)
+        .ok()
+        .and_then(|t| t.get("title")?.as_str().map(str::to_string))
+        .unwrap_or_default()
 }
 
 /// The dotted key of the reading error `message` in `table` (the file with its overrides),

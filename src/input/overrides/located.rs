@@ -15,6 +15,59 @@ pub(super) fn key_at(text: &str, at: usize) -> Option<String> {
     in_table(document.as_table(), at, "")
 }
 
+/// The line (1-based) where `key` (`--set` syntax: `contact.friction`, `probes.M.at`,
+/// `bodies[0].blocks[1].u`) is written in `text`: its key's line, or an array entry's own.
+/// None where the text does not hold it.
+pub(super) fn line_of(text: &str, key: &str) -> Option<usize> {
+    use super::Segment;
+    /// Where the walk along the key is: a table's entry, an array-of-tables entry, or a value
+    /// inside an inline table or array.
+    enum Node<'a> {
+        Item(&'a Item),
+        Table(&'a Table),
+        Value(&'a Value),
+    }
+    let document = ImDocument::parse(text).ok()?;
+    let mut node = Node::Table(document.as_table());
+    let mut span = None;
+    for segment in super::parse_key(key).ok()? {
+        node = match (node, segment) {
+            (Node::Item(item), Segment::Key(name)) => {
+                let (k, next) = item.as_table_like()?.get_key_value(&name)?;
+                span = k.span().or(span);
+                Node::Item(next)
+            }
+            (Node::Table(table), Segment::Key(name)) => {
+                let (k, next) = table.get_key_value(&name)?;
+                span = k.span().or(span);
+                Node::Item(next)
+            }
+            (Node::Value(value), Segment::Key(name)) => {
+                let (k, next) = value.as_inline_table()?.get_key_value(&name)?;
+                span = k.span().or(span);
+                Node::Item(next)
+            }
+            (Node::Item(Item::ArrayOfTables(array)), Segment::Index(i)) => {
+                let entry = array.get(i)?;
+                span = entry.span().or(span);
+                Node::Table(entry)
+            }
+            (Node::Item(item), Segment::Index(i)) => {
+                let element = item.as_array()?.get(i)?;
+                span = element.span().or(span);
+                Node::Value(element)
+            }
+            (Node::Value(value), Segment::Index(i)) => {
+                let element = value.as_array()?.get(i)?;
+                span = element.span().or(span);
+                Node::Value(element)
+            }
+            (Node::Table(_), Segment::Index(_)) => return None,
+        };
+    }
+    span.map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1)
+}
+
 /// `segment` appended to `prefix` as in `--set` keys: bare when it can be, else quoted.
 fn join(prefix: &str, segment: &str) -> String {
     let bare = !segment.is_empty()
@@ -90,6 +143,23 @@ mod tests {
 
     fn key_of(text: &str, needle: &str) -> Option<String> {
         key_at(text, text.find(needle).expect("needle in text"))
+    }
+
+    #[test]
+    fn a_key_s_line_is_where_it_is_written() {
+        let text = "title = \"t\"\n[[bodies]]\nname = \"a\"\n[[bodies.blocks]]\ncorners = [\n  [0.0, 0.0],\n  [1.0, 0.0],\n]\nmaterial = 3\n[[bodies.blocks]]\nu = 4\n[wear]\nbody1 = { beta = 1e-8, a = 2 }\n[probes]\nM = { body = \"a\", at = [1.0, 2.0] }\n";
+        let line = |key: &str| super::line_of(text, key);
+        assert_eq!(line("title"), Some(1));
+        assert_eq!(line("bodies[0].name"), Some(3));
+        assert_eq!(line("bodies[0].blocks[0].corners"), Some(5));
+        assert_eq!(line("bodies[0].blocks[0].corners[1]"), Some(7));
+        assert_eq!(line("bodies[0].blocks[0].material"), Some(9));
+        assert_eq!(line("bodies[0].blocks[1].u"), Some(11));
+        assert_eq!(line("wear.body1.a"), Some(13));
+        assert_eq!(line("probes.M.at"), Some(15));
+        assert_eq!(line("bodies[0].blocks[2].u"), None);
+        assert_eq!(line("wear.body2"), None);
+        assert_eq!(line("contact.friction"), None);
     }
 
     #[test]

@@ -267,5 +267,17 @@ fn an_error_of_the_file_is_not_blamed_on_an_override() {
         .replace("p = 8\n", "")
         .replace("friction = 0.25", "frction = 0.25");
     let e = parse_spec(&text, "t.toml", &[Override::parse("analysis.p=8").unwrap()]).unwrap_err();
-    assert_eq!(e.key, "contact.frction");
+    // With its line in the file, as without the override (a later red team: it was lost).
+    let line = 1 + text.lines().position(|l| l.starts_with("frction")).unwrap();
+    assert_eq!(e.key, format!("contact.frction (line {line})"));
+    // A wrong type mended around the same way keeps its line too.
+    let text = punch()
+        .replace("p = 8\n", "")
+        .replace("friction = 0.25", "friction = \"high\"");
+    let e = parse_spec(&text, "t.toml", &[Override::parse("analysis.p=8").unwrap()]).unwrap_err();
+    let line = 1 + text
+        .lines()
+        .position(|l| l.starts_with("friction"))
+        .unwrap();
+    assert_eq!(e.key, format!("contact.friction (line {line})"));
 }
