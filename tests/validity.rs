@@ -515,3 +515,27 @@ fn a_strained_thin_layer_is_reported_although_the_plate_barely_moves() {
         "{steady:?}"
     );
 }
+
+/// The depth the worn-depth check compares with is the depth of the blocks that carry the
+/// contact edge, across them from the edge: the brake's shoe is a ring sector from r = 200 to
+/// 240 mm and its disc from 120 to 200 mm (the file's corners), so 40 and 80 mm, where their
+/// corners projected on the contact's mean normal gave 34.6 and 40 mm (a red team's bush
+/// 15 mm thick was called 7.5 mm); the punch's lowest block is 20 mm tall, the strip 100 mm.
+#[test]
+fn the_worn_depth_is_compared_with_the_block_s_depth_across_it() {
+    // Round-off of the arcs' blending map only (both sides of a ring sector are exact arcs).
+    let close = |got: Option<(String, f64)>, name: &str, depth: f64| {
+        let (got_name, got_depth) = got.expect("a depth");
+        assert_eq!(got_name, name);
+        assert!(
+            (got_depth - depth).abs() < 1e-9 * depth,
+            "{name}: {got_depth} against {depth}"
+        );
+    };
+    let brake = builtin("brake", &[]);
+    close(validity::worn_blocks_depth(&brake, 0), "shoe", 40.0);
+    close(validity::worn_blocks_depth(&brake, 1), "disc", 80.0);
+    let punch = builtin("punch-b40", &[]);
+    close(validity::worn_blocks_depth(&punch, 0), "punch", 20.0);
+    close(validity::worn_blocks_depth(&punch, 1), "strip", 100.0);
+}

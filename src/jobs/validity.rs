@@ -146,11 +146,7 @@ fn extent(points: impl Iterator<Item = [f64; 2]>, normal: [f64; 2]) -> f64 {
 /// the least of them. A pad modelled as a block of its own is measured by itself, not by the
 /// whole body; a ring sector by its radial thickness (its corners, projected on the mean
 /// normal, called a bush 15 mm thick 7.5 mm: red team F).
-fn worn_blocks_depth(
-    problem: &Problem,
-    contact: &CondensedContact,
-    which: usize,
-) -> Option<(String, f64)> {
+pub fn worn_blocks_depth(problem: &Problem, which: usize) -> Option<(String, f64)> {
     let c = problem.spec.contact.as_ref()?;
     let (name, edge) = if which == 0 {
         (&c.body, &c.edge)
@@ -164,8 +160,6 @@ fn worn_blocks_depth(
         .iter()
         .map(|&(e, local)| depth_across_block(&mesh, e, local))
         .fold(f64::INFINITY, f64::min);
-    // Without contact points there is nothing worn to compare.
-    mean_normal(contact)?;
     depth.is_finite().then(|| (name.clone(), depth))
 }
 
@@ -199,18 +193,14 @@ fn depth_across_block(mesh: &crate::mesh::Mesh, element: usize, local: usize) ->
 }
 
 /// A warning for each body whose worn depth ([`WearHistory::worn_depth`]) exceeds
-/// [`GEOMETRY_LIMIT`] of the extent, along the contact normal, of the blocks that carry its
-/// contact edge: the meshes are never updated, so such wear is outside the model.
-pub fn wear_depth_warnings(
-    problem: &Problem,
-    contact: &CondensedContact,
-    history: &WearHistory,
-) -> Vec<String> {
+/// [`GEOMETRY_LIMIT`] of the depth of the blocks that carry its contact edge
+/// ([`worn_blocks_depth`]): the meshes are never updated, so such wear is outside the model.
+pub fn wear_depth_warnings(problem: &Problem, history: &WearHistory) -> Vec<String> {
     (0..2)
         .filter(|&b| history.worn_depth[b] > 0.0)
         .filter_map(|b| {
             let depth = history.worn_depth[b];
-            let (name, size) = worn_blocks_depth(problem, contact, b)?;
+            let (name, size) = worn_blocks_depth(problem, b)?;
             (depth > GEOMETRY_LIMIT * size).then(|| format!(
                 "warning: {}: the run wore up to {:.4e} mm off body {} (\"{name}\"), {} the {:.4} mm depth of the blocks that carry its contact edge (their thinnest, across the block from the edge); the meshes are never updated (wear enters as a gap only), so a worn depth that is not small against them is outside the model: a pad worn through still counts with its stiffness. Shorten the run or check the wear coefficient",
                 problem.file,
@@ -328,7 +318,7 @@ pub fn run_checks(problem: &Problem, run: &crate::driver::WearRun) -> Vec<String
         let change = half_period_pressure_change(&mut solver, &integrator, &h.shape, &pressures);
         warnings.extend(half_period_warning(problem, change));
     }
-    warnings.extend(wear_depth_warnings(problem, &run.contact, h));
+    warnings.extend(wear_depth_warnings(problem, h));
     warnings.extend(displacement_warning(
         problem,
         &run.contact,
