@@ -287,8 +287,10 @@ pub(crate) fn steady_by(
         return Err(Failure::Compute(format!("the {} method did not converge in {} iterations ({:?}, eq. 49 residual {:.3e}); nothing was written", method.name(), outcome.state.iterations, outcome.state.status, outcome.residual)));
     }
     let state = &outcome.state;
-    let mut warnings = driver::zone_warnings(p, &contact, &[&state.p_plus, &state.p_minus]);
-    warnings.extend(wearfem::p_check::resolution_warnings(p, &contact, true));
+    // The exact method's warnings on the model and the mesh, for this state: a §6 method
+    // solves the same model (a red team found the strain, half-period and stroke warnings
+    // printed by `--method exact` missing from the others).
+    let mut warnings = driver::steady_warnings(p, &contact, state);
     match outcome.distance_from_exact {
         Some(d) if d > wearfem::steady_check::STEADY_PRESSURE_LIMIT => warnings.push(format!(
             "warning: {}: the {} method's pressures are {:.2} % of the peak from the exact steady state (`--method exact`): the paper's §6 methods approximate it (docs/validation.md)",
@@ -304,6 +306,9 @@ pub(crate) fn steady_by(
         ),
     }
     wearfem::output::write_steady_method(out, p, &contact, &outcome, setup, &warnings)?;
+    if let Some(note) = driver::target_mesh_note(p, &contact) {
+        println!("{note}");
+    }
     if vtk {
         wearfem::vtk::write_steady(out, p, &outcome.state)?;
     }

@@ -543,12 +543,17 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     format!("{label}({n}) = {:.4} MPa", state.p_plus[*i])
                 })
                 .collect();
+            // Without probes the line ends at the time (it read "…;  → out").
+            let probes = if probes.is_empty() {
+                String::new()
+            } else {
+                format!("; {}", probes.join(", "))
+            };
             println!(
-                "{}: steady state in {} iterations, {:.4} s (set-up included); {} → {}",
+                "{}: steady state in {} iterations, {:.4} s (set-up included){probes} → {}",
                 p.file,
                 state.iterations,
                 seconds,
-                probes.join(", "),
                 out.display()
             );
             for w in &warnings {
