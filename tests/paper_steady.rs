@@ -612,7 +612,14 @@ fn every_method_gives_the_exact_method_s_model_warnings() {
             "wearfem-method-warnings-{name}-{method}-{}",
             std::process::id()
         ));
-        let mut args = vec!["steady", name, "--method", method, "--out", dir.to_str().unwrap()];
+        let mut args = vec![
+            "steady",
+            name,
+            "--method",
+            method,
+            "--out",
+            dir.to_str().unwrap(),
+        ];
         for s in sets {
             args.extend(["--set", s]);
         }
@@ -633,10 +640,17 @@ fn every_method_gives_the_exact_method_s_model_warnings() {
     };
     for (name, sets, expected) in [
         ("pin", vec![], "wear.amplitude"),
-        ("punch-b40", vec!["materials.steel.young=1e3"], "is strained by"),
+        (
+            "punch-b40",
+            vec!["materials.steel.young=1e3"],
+            "is strained by",
+        ),
     ] {
         let exact = warnings(name, &sets, "exact");
-        assert!(exact.iter().any(|w| w.contains(expected)), "{name}: {exact:?}");
+        assert!(
+            exact.iter().any(|w| w.contains(expected)),
+            "{name}: {exact:?}"
+        );
         for method in ["averaged", "spline", "penalty"] {
             let theirs = warnings(name, &sets, method);
             for w in &exact {
