@@ -539,3 +539,27 @@ fn the_worn_depth_is_compared_with_the_block_s_depth_across_it() {
     close(validity::worn_blocks_depth(&punch, 0), "punch", 20.0);
     close(validity::worn_blocks_depth(&punch, 1), "strip", 100.0);
 }
+
+/// The depth is the least along the whole contact edge, not at the elements' middles (red
+/// team K): a pad tapered from 20 to 1 mm over one element is 1 mm deep at its thin end (its
+/// corners), and 98 % of that worn off was silent when the depth was taken 10.5 mm at the
+/// middle; a pad whose top is an arc of radius 37.5 mm about (0, 42.5) dips to 42.5 − 37.5 =
+/// 5 mm at x = 0, an element end when cut in two.
+#[test]
+fn the_worn_depth_is_the_least_along_the_contact_edge() {
+    let tapered = from_file("pad-tapered-to-1mm.toml", &[]);
+    let (_, depth) = validity::worn_blocks_depth(&tapered, 0).expect("a depth");
+    // Exact corners on a straight side: round-off only.
+    assert!((depth - 1.0).abs() < 1e-12, "{depth}");
+    let dipped = from_file(
+        "pad-tapered-to-1mm.toml",
+        &[
+            "bodies[0].blocks[0].corners=[[-30.0, 0.0], [30.0, 0.0], [30.0, 20.0], [-30.0, 20.0]]",
+            "bodies[0].blocks[0].arcs=[{ edge = 2, center = [0.0, 42.5] }]",
+            "bodies[0].blocks[0].u=2",
+        ],
+    );
+    let (_, depth) = validity::worn_blocks_depth(&dipped, 0).expect("a depth");
+    // The arc's lowest point lies at the symmetric parameter u = 1/2: round-off of its map.
+    assert!((depth - 5.0).abs() < 1e-9, "{depth}");
+}

@@ -18,7 +18,7 @@ from __future__ import annotations
 import json
 import re as _re
 import warnings as _warnings
-from typing import Any, Callable, Dict, Mapping, Optional
+from typing import Any, Callable, Dict, List, Mapping, Optional
 
 import operator as _operator
 
@@ -211,7 +211,8 @@ class RunResult(_Result):
     ``failed_solves``, ``unconverged_steps``, ``oscillating_steps`` (``converged`` is False
     when any of these three is non-zero or the run stopped early for another reason than the
     steady state; the profiles and steps are then only those of the completed steps),
-    ``sliding_distance_m`` (m), ``setup_seconds``, ``run_seconds`` (s).
+    ``sliding_distance_m`` (m), ``worn_depth`` ([body 1, body 2]: the largest depth worn off
+    each body at a contact point, mm), ``setup_seconds``, ``run_seconds`` (s).
     """
 
     def __init__(self, summary):
@@ -239,6 +240,8 @@ class RunResult(_Result):
         self.failed_solves: int = summary["failed_solves"]
         self.unconverged_steps: int = summary["unconverged_steps"]
         self.oscillating_steps: int = summary.get("oscillating_steps", 0)
+        # [body 1, body 2]: the largest depth worn off each body at a contact point, mm.
+        self.worn_depth: List[float] = list(summary["worn_depth"])
         self.steady_reached: Optional[bool] = summary.get("steady_reached")
         self.steady_distance: Optional[Dict[str, Optional[float]]] = summary.get("steady_distance")
         self.sliding_distance_m: Optional[float] = summary["sliding_distance_m"]

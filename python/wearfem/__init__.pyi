@@ -108,6 +108,7 @@ class RunResult:
     failed_solves: int
     unconverged_steps: int
     oscillating_steps: int
+    worn_depth: List[float]
     sliding_distance_m: Optional[float]  # m
     setup_seconds: float
     run_seconds: float

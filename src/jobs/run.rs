@@ -263,6 +263,7 @@ impl WearRun {
             "failed_solves": h.failed_solves,
             "unconverged_steps": h.unconverged_steps,
             "oscillating_steps": h.oscillating_steps,
+            "worn_depth": numbers(&h.worn_depth),
             "warnings": self.warnings(problem),
             "setup_seconds": self.setup_seconds,
             "run_seconds": self.run_seconds,
