@@ -461,6 +461,8 @@ fn charge_failure(
                     Some(line) => format!("{key} (line {line})"),
                     None => key,
                 },
+                // Inside a table the override gives (`plate={…, pinn=1}`): the key in it.
+                Some(key) if key.len() > o.key.len() && concerns(&key, &o.key) => key,
                 _ => o.key.clone(),
             },
             message: one_line(e.message()),

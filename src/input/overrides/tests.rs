@@ -163,6 +163,18 @@ fn bad_keys_and_values_name_the_key() {
         ("bodies[5].name=\"x\"", "bodies[5].name", "2 entries"),
         ("contact.friction.x=1", "contact.friction.x", "not a table"),
         ("wear.steps=1.5", "wear.steps", "invalid type"),
+        // A table given whole: the key inside it that is wrong, as a file names it (red
+        // team I: these named the table only).
+        (
+            "plate={edge=\"top\", motion=\"vertical\", pinn=1}",
+            "plate.pinn",
+            "pinn",
+        ),
+        (
+            "wear.body1={beta=\"x\", a=1.0, b=1.0}",
+            "wear.body1.beta",
+            "invalid type",
+        ),
     ];
     for (set, key, fragment) in cases {
         let e = with(&[set]).unwrap_err();
