@@ -399,6 +399,18 @@ fn model_limits_are_warned_about() {
     };
     assert!(!stderr(&[]).contains("warning"));
     assert!(stderr(&["wear.amplitude=1000"]).contains("wear.amplitude: the stroke"));
+    // A stroke long against the whole edge with body 2 wearing: both warnings, the edge's
+    // and body 2's overstated depth (a red team's pad got only the first). The punch's zone
+    // is its whole 60 mm face: 2u₀ = 9 mm is 15 % of both.
+    let both = stderr(&[
+        "wear.amplitude=4.5",
+        "wear.body2={ beta = 1e-8, a = 1.0, b = 1.0 }",
+    ]);
+    assert!(both.contains("of the contact edge's"), "{both}");
+    assert!(
+        both.contains("of the contact zone's") && both.contains("body 2 wears"),
+        "{both}"
+    );
     let monotonic = stderr(&[
         "wear.sliding=monotonic",
         "wear.speed=1",
