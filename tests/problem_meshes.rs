@@ -142,3 +142,63 @@ fn a_changed_spec_gets_meshes_of_its_own() {
         "example",
     );
 }
+
+/// The materials' order and the bodies' names are part of what a mesh is built from: a block's
+/// material is an index into the materials in name order, and the contact names its bodies.
+/// Built in the same process as punch-b40 itself, each must get meshes of its own:
+/// - punch-b40 with an unused material "aluminium" (E = 7e4 MPa), first in name order: the
+///   blocks are the same, their materials' indices shift, and every element of the punch's
+///   lowest block must still have the composite's E = 1.3e5 MPa (the file's), the others
+///   steel's 2e5;
+/// - punch-b40 with the punch in 5 columns (its strip then gets lines at the punch's element
+///   ends) and its bodies' names swapped: the contact now names the strip's blocks as body 1,
+///   which have no edge "contact", so no lines are added to body 2, and the strip's blocks
+///   (named "punch") keep only their own lines.
+#[test]
+fn material_order_and_body_names_reach_the_meshes() {
+    let text = wearfem::examples::example("punch-b40").expect("built-in example");
+    let materials = |problem: &Problem| {
+        let mesh = problem.mesh(0).expect("the punch's mesh");
+        for element in &mesh.elements {
+            let young = problem.materials[element.material].young;
+            let expected = if element.block == 0 { 1.3e5 } else { 2.0e5 };
+            assert_eq!(young, expected, "block {}", element.block);
+        }
+    };
+    let with_aluminium = text.replace(
+        "[materials.composite]",
+        "[materials.aluminium]\nyoung = 7.0e4\npoisson = 0.33\n\n[materials.composite]",
+    );
+    // The punch in 5 columns, so that aligning the strip to it adds lines (with 8 it adds
+    // none, and an aligned strip could not be told from one as given).
+    let five = text.replace("\nu = 8", "\nu = 5");
+    assert_eq!(five.matches("\nu = 5").count(), 2, "the punch's two blocks");
+    let swapped = five
+        .replace("name = \"punch\"", "name = \"x\"")
+        .replace("name = \"strip\"", "name = \"punch\"")
+        .replace("name = \"x\"", "name = \"strip\"");
+    for _ in 0..2 {
+        let original = Problem::from_toml(text, "punch-b40").expect("valid");
+        materials(&original);
+        assert_same_x(
+            &strip_surface_x(&original),
+            &expected_surface_x(8),
+            "original",
+        );
+        let other = Problem::from_toml(&with_aluminium, "aluminium").expect("valid");
+        assert_eq!(
+            other.spec.materials.keys().next().map(String::as_str),
+            Some("aluminium")
+        );
+        materials(&other);
+        let aligned = Problem::from_toml(&five, "five columns").expect("valid");
+        assert_same_x(
+            &strip_surface_x(&aligned),
+            &expected_surface_x(5),
+            "five columns",
+        );
+        let swapped = Problem::from_toml(&swapped, "swapped").expect("valid");
+        assert_eq!(swapped.spec.bodies[1].name, "punch");
+        assert_same_x(&strip_surface_x(&swapped), &STRIP_LINES, "names swapped");
+    }
+}

@@ -456,11 +456,16 @@ fn charge_failure(
             // (red team 21: a typo in [contact] was blamed on `--set analysis.p=8`).
             key: match key_in(&table, e.message()) {
                 // An error of the file itself, with its line when the file writes the key
-                // (red team: the line was lost when an override mended another error).
-                Some(key) if !concerns(&key, &o.key) => match located::line_of(text, &key) {
-                    Some(line) => format!("{key} (line {line})"),
-                    None => key,
-                },
+                // (red team: the line was lost when an override mended another error); not
+                // where another override wrote the key, whose value is then not the file's
+                // (review M: `--set contact.friction="high"` was given the file's line).
+                Some(key) if !concerns(&key, &o.key) => {
+                    let written = overrides.iter().any(|other| concerns(&key, &other.key));
+                    match located::line_of(text, &key).filter(|_| !written) {
+                        Some(line) => format!("{key} (line {line})"),
+                        None => key,
+                    }
+                }
                 // Inside a table the override gives (`plate={…, pinn=1}`): the key in it.
                 Some(key) if key.len() > o.key.len() && concerns(&key, &o.key) => key,
                 _ => o.key.clone(),

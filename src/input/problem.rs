@@ -198,6 +198,9 @@ impl Problem {
             spec,
             meshes: None,
         };
+        // Every body's mesh is built before any traction window is checked: of a file with
+        // a wrong window on body 1 and a wrong mesh on body 2, the mesh is reported (each
+        // error is reported alone once the other is mended).
         let built = meshes::BuiltMeshes::of(&problem)?;
         for b in 0..problem.spec.bodies.len() {
             problem.check_traction_windows(b, built.mesh(b))?;

@@ -113,13 +113,13 @@ fn trunk_space_warning(problem: &Problem) -> Option<String> {
     // Hertz, flat blocks with a crown in the gap: 330.21 against the tensor space's 330.25
     // MPa); arcs and other quadrilaterals map it non-affinely.
     let non_affine = [&c.body, &c.target_body].into_iter().any(|name| {
+        // At p = 1 the two spaces are the same (four vertex modes).
         problem.body_index(name).is_ok_and(|b| {
-            problem.spec.bodies[b].blocks.iter().any(|block| {
-                let [c0, c1, c2, c3] = block.corners;
-                let size = (c2[0] - c0[0]).hypot(c2[1] - c0[1]);
-                let skew = (c0[0] + c2[0] - c1[0] - c3[0]).hypot(c0[1] + c2[1] - c1[1] - c3[1]);
-                !block.arcs.is_empty() || skew > 1e-9 * size
-            })
+            problem.body_discretisation(b).p >= 2
+                && problem.spec.bodies[b]
+                    .blocks
+                    .iter()
+                    .any(not_a_parallelogram)
         })
     });
     (non_affine && problem.discretisation.space == crate::basis::Space::Trunk).then(|| {
@@ -128,6 +128,15 @@ fn trunk_space_warning(problem: &Problem) -> Option<String> {
             problem.file
         )
     })
+}
+
+/// Whether `block` maps the unit square non-affinely: an arc edge, or corners that are not a
+/// parallelogram (c₀ + c₂ ≠ c₁ + c₃ beyond round-off of its size).
+fn not_a_parallelogram(block: &crate::schema::BlockSpec) -> bool {
+    let [c0, c1, c2, c3] = block.corners;
+    let size = (c2[0] - c0[0]).hypot(c2[1] - c0[1]);
+    let skew = (c0[0] + c2[0] - c1[0] - c3[0]).hypot(c0[1] + c2[1] - c1[1] - c3[1]);
+    !block.arcs.is_empty() || skew > 1e-9 * size
 }
 
 /// The console warnings on where the contact zones of `pressures` end: cut by the named
