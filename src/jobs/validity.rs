@@ -142,7 +142,7 @@ fn extent(points: impl Iterator<Item = [f64; 2]>, normal: [f64; 2]) -> f64 {
 
 /// For body `which` (0: body 1, 1: body 2) of the contact: its name, and the depth of the
 /// blocks that carry its contact edge, mm: along each element's contact side
-/// ([`DEPTH_SAMPLES`] places, its ends included), the distance through its block to the
+/// (nine places, its ends included), the distance through its block to the
 /// block's opposite side along the edge's normal there, the least of them. A pad modelled
 /// as a block of its own is measured by itself, not by the whole body; a ring sector by its
 /// radial thickness (its corners, projected on the mean normal, called a bush 15 mm thick
