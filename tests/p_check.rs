@@ -184,3 +184,41 @@ fn the_check_follows_analysis_p_check() {
         );
     }
 }
+
+/// The p-check judges the first contact; for a steady state its warning says so, since the
+/// steady zones can be wider (red team J: punch-a with a 2 m crown warned of 5.1 %, while its
+/// steady state is the flat punch's: equal to it to round-off here, and the flat one passes).
+#[test]
+fn a_steady_state_s_p_warning_says_it_measures_the_first_contact() {
+    let text = wearfem::examples::example("punch-a").unwrap();
+    let crowned = problem(
+        text,
+        &["contact.initial_shape={radius=2000.0, center_x=1100.0}"],
+    );
+    let (state, contact, _) = driver::steady(&crowned).unwrap();
+    let warnings = driver::steady_warnings(&crowned, &contact, &state);
+    let p_warning = warnings
+        .iter()
+        .find(|w| w.contains("not converged in p"))
+        .expect("the first contact is not resolved");
+    assert!(
+        p_warning.contains("For a steady state this measures the first contact"),
+        "{p_warning}"
+    );
+    let flat = problem(text, &[]);
+    let (flat_state, flat_contact, _) = driver::steady(&flat).unwrap();
+    let peak = flat_state.p_plus.iter().cloned().fold(0.0, f64::max);
+    for (a, b) in state.p_plus.iter().zip(&flat_state.p_plus) {
+        // The premise: the same steady state (1e-9 of the peak: the iteration's round-off).
+        assert!((a - b).abs() < 1e-9 * peak, "{a} against {b}");
+    }
+    let flat_warnings = driver::steady_warnings(&flat, &flat_contact, &flat_state);
+    assert!(!flat_warnings
+        .iter()
+        .any(|w| w.contains("not converged in p")));
+    // The contact job's own warning is about the first contact and needs no such note.
+    let (summary, ..) = driver::contact(&crowned).unwrap();
+    assert!(!summary["warnings"]
+        .to_string()
+        .contains("For a steady state"));
+}
