@@ -1,6 +1,7 @@
 //! The finite element model: quadrature, shape functions, exact geometry, mesh, materials, dof numbering, elasticity with condensation and factorisation, loads and post-processing.
 
 pub mod basis;
+pub mod conduction;
 pub mod dofs;
 pub mod elasticity;
 pub mod fields;

@@ -82,7 +82,9 @@ pub mod wear;
 
 // Every stage's modules stay reachable at the crate root (`wearfem::basis`, …), as before the
 // folders grouped them.
-pub use fe::{basis, dofs, elasticity, fields, geometry, loads, material, mesh, quadrature};
+pub use fe::{
+    basis, conduction, dofs, elasticity, fields, geometry, loads, material, mesh, quadrature,
+};
 pub use input::{examples, overrides, problem, schema, wear_units};
 pub use jobs::{driver, p_check, steady_check, sweep, validate, validity};
 pub use report::{deformation, output, plot, vtk};

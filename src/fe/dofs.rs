@@ -3,7 +3,8 @@
 //!
 //! Internal modes are condensed element by element and never numbered globally. The remaining
 //! unknowns belong to *entities*: a vertex carries 2 dofs (u_x, u_z), an edge 2(p−1) (degree
-//! 2..=p, each u_x then u_z). An entity's dofs are consecutive, so every pair of neighbouring
+//! 2..=p, each u_x then u_z); a scalar field (the temperature, [`DofMap::scalar`]) has one
+//! component, so its numbering is the vector one halved. An entity's dofs are consecutive, so every pair of neighbouring
 //! entities owns a dense block of the matrix: assembly adds whole blocks, no per-entry search.
 
 use crate::mesh::{Mesh, EDGE_ENDPOINTS};
@@ -17,9 +18,12 @@ pub struct DofMap {
     pub entity_offset: Vec<usize>,
     /// Number of vertices (entity ids below it are vertices).
     pub n_vertices: usize,
+    /// Components per mode: 2 for a displacement (x, z), 1 for a temperature.
+    pub components: usize,
 }
 
-/// One element's boundary dofs in element order (mode-major: mode a, component c → 2a + c).
+/// One element's boundary dofs in element order (mode-major: mode a, component c → 2a + c;
+/// a for a scalar field).
 #[derive(Clone, Debug)]
 pub struct ElementDofs {
     /// Global dof of each local boundary dof.
@@ -31,23 +35,33 @@ pub struct ElementDofs {
 }
 
 impl DofMap {
-    /// Number the dofs of `mesh` at degree `p`.
+    /// Number the displacement dofs (x, z) of `mesh` at degree `p`.
     pub fn new(mesh: &Mesh, p: usize) -> DofMap {
+        Self::with_components(mesh, p, 2)
+    }
+
+    /// Number the dofs of a scalar field (one per mode) of `mesh` at degree `p`.
+    pub fn scalar(mesh: &Mesh, p: usize) -> DofMap {
+        Self::with_components(mesh, p, 1)
+    }
+
+    fn with_components(mesh: &Mesh, p: usize, components: usize) -> DofMap {
         let mut entity_offset = Vec::with_capacity(mesh.vertices.len() + mesh.edges.len() + 1);
         let mut next = 0;
         for _ in &mesh.vertices {
             entity_offset.push(next);
-            next += 2;
+            next += components;
         }
         for _ in &mesh.edges {
             entity_offset.push(next);
-            next += 2 * (p - 1);
+            next += components * (p - 1);
         }
         entity_offset.push(next);
         DofMap {
             p,
             entity_offset,
             n_vertices: mesh.vertices.len(),
+            components,
         }
     }
 
@@ -68,17 +82,17 @@ impl DofMap {
 
     /// Global dof of component `c` of the degree-`k` mode (2 ≤ k ≤ p) on global edge `e`.
     pub fn edge_dof(&self, e: usize, k: usize, c: usize) -> usize {
-        self.entity_offset[self.n_vertices + e] + 2 * (k - 2) + c
+        self.entity_offset[self.n_vertices + e] + self.components * (k - 2) + c
     }
 
     /// Boundary dofs of element `element`, in the order of [`crate::basis::QuadBasis`] modes.
     pub fn element_dofs(&self, mesh: &Mesh, element: usize) -> ElementDofs {
         let el = &mesh.elements[element];
         let p = self.p;
-        let mut global = Vec::with_capacity(8 * p);
-        let mut sign = Vec::with_capacity(8 * p);
+        let mut global = Vec::with_capacity(4 * self.components * p);
+        let mut sign = Vec::with_capacity(4 * self.components * p);
         for &v in &el.vertices {
-            for c in 0..2 {
+            for c in 0..self.components {
                 global.push(self.vertex_dof(v, c));
                 sign.push(1.0);
             }
@@ -88,7 +102,7 @@ impl DofMap {
             let reversed = el.vertices[a] > el.vertices[b];
             for k in 2..=p {
                 let s = if reversed && k % 2 == 1 { -1.0 } else { 1.0 };
-                for c in 0..2 {
+                for c in 0..self.components {
                     global.push(self.edge_dof(edge, k, c));
                     sign.push(s);
                 }

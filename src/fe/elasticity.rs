@@ -190,7 +190,7 @@ pub struct Displacement {
     pub local: Vec<Vec<f64>>,
 }
 
-fn quadrature_points(mesh: &Mesh, element: usize, p: usize) -> usize {
+pub(crate) fn quadrature_points(mesh: &Mesh, element: usize, p: usize) -> usize {
     // Parallelogram maps make the integrand polynomial of degree 2p per direction: p + 1
     // Gauss points are exact. Other maps are rational or transcendental: p + 3 points keep the
     // quadrature error below the discretisation error for the meshes we ship (checked by the
@@ -214,7 +214,7 @@ fn quadrature_points(mesh: &Mesh, element: usize, p: usize) -> usize {
 }
 
 /// A key that is equal for elements whose maps agree up to a translation.
-fn geometry_key(mesh: &Mesh, element: usize, material: usize, nq: usize) -> Vec<i64> {
+pub(crate) fn geometry_key(mesh: &Mesh, element: usize, material: usize, nq: usize) -> Vec<i64> {
     let origin = mesh.map(element, -1.0, -1.0);
     let far = mesh.map(element, 1.0, 1.0);
     let size = (far[0] - origin[0]).hypot(far[1] - origin[1]).max(1e-300);

@@ -1,4 +1,5 @@
-//! Isotropic linear elastic materials and the 2D constitutive matrices.
+//! Isotropic linear elastic materials and the 2D constitutive matrices; the thermal properties
+//! of the heat stage ([`ThermalMaterial`]) and the thermal stress they cause.
 
 /// Isotropic linear elastic material.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -69,6 +70,81 @@ impl Material {
     }
 }
 
+/// Thermal properties of a material in the model's units (mm, s, mJ, mW, K). A problem file
+/// gives them in the units engineers use, and [`ThermalMaterial::from_engineering`] converts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ThermalMaterial {
+    /// Conductivity k, mW/(mm·K) (numerically equal to W/(m·K)).
+    pub conductivity: f64,
+    /// Heat capacity per unit volume ρc, mJ/(mm³·K).
+    pub heat_capacity: f64,
+    /// Linear thermal expansion coefficient α, 1/K.
+    pub expansion: f64,
+}
+
+impl ThermalMaterial {
+    /// From a conductivity in W/(m·K), a specific heat in J/(kg·K), a density in kg/m³ and an
+    /// expansion coefficient in 1/K. W/(m·K) = 10³ mW / (10³ mm · K) is the same number in
+    /// mW/(mm·K); J/(kg·K) · kg/m³ = J/(m³·K) = 10³ mJ / (10⁹ mm³ · K), hence the 10⁻⁶.
+    pub fn from_engineering(
+        conductivity: f64,
+        specific_heat: f64,
+        density: f64,
+        expansion: f64,
+    ) -> ThermalMaterial {
+        ThermalMaterial {
+            conductivity,
+            heat_capacity: specific_heat * density * 1e-6,
+            expansion,
+        }
+    }
+
+    /// Thermal diffusivity k/(ρc), mm²/s.
+    pub fn diffusivity(&self) -> f64 {
+        self.conductivity / self.heat_capacity
+    }
+
+    /// Thermal effusivity √(k ρc), mW·s^½/(mm²·K): how two bodies pressed together share a
+    /// heat source at their interface in a short contact (Blok's partition).
+    pub fn effusivity(&self) -> f64 {
+        (self.conductivity * self.heat_capacity).sqrt()
+    }
+}
+
+/// A heat transfer coefficient in W/(m²·K) in the model's mW/(mm²·K): 10³ mW / (10⁶ mm² · K).
+pub fn film_coefficient(watts_per_square_metre_kelvin: f64) -> f64 {
+    watts_per_square_metre_kelvin * 1e-3
+}
+
+impl Material {
+    /// The stress (σ_xx, σ_zz, σ_xz) a free thermal strain of one kelvin would need to be held
+    /// back (MPa/K): D m α′ with m = (1, 1, 0) and α′ the in-plane free strain per kelvin, α
+    /// in plane stress (the body expands freely out of its plane) and (1 + ν) α in plane strain
+    /// (ε_yy = 0 holds the out-of-plane expansion back, which pushes the plane outwards through
+    /// Poisson's effect). This is E α/(1 − ν) and E α/(1 − 2ν) on the diagonal.
+    pub fn thermal_stress_per_kelvin(&self, analysis: Analysis, expansion: f64) -> [f64; 3] {
+        let free_strain = match analysis {
+            Analysis::PlaneStress { .. } => expansion,
+            Analysis::PlaneStrain { .. } => (1.0 + self.poisson) * expansion,
+        };
+        let d = self.constitutive(analysis);
+        [
+            (d[0][0] + d[0][1]) * free_strain,
+            (d[1][0] + d[1][1]) * free_strain,
+            0.0,
+        ]
+    }
+
+    /// The in-plane free thermal strain per kelvin (α or (1 + ν) α, see
+    /// [`Material::thermal_stress_per_kelvin`]), 1/K.
+    pub fn free_thermal_strain(&self, analysis: Analysis, expansion: f64) -> f64 {
+        match analysis {
+            Analysis::PlaneStress { .. } => expansion,
+            Analysis::PlaneStrain { .. } => (1.0 + self.poisson) * expansion,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -96,5 +172,30 @@ mod tests {
         // σ_zz = 0 ⇒ ε_zz = −ν ε_xx ⇒ σ_xx = E ε_xx.
         let sxx = d[0][0] - d[0][1] * d[1][0] / d[1][1];
         assert!((sxx - m.young).abs() < 1e-9 * m.young);
+    }
+
+    #[test]
+    fn thermal_stress_coefficients() {
+        let m = Material {
+            young: 2.0e5,
+            poisson: 0.3,
+        };
+        let alpha = 1.2e-5;
+        // Closed forms: E α/(1 − ν) (plane stress) and E α/(1 − 2ν) (plane strain); a few
+        // operations of round-off.
+        let s = m.thermal_stress_per_kelvin(Analysis::PlaneStress { thickness: 1.0 }, alpha);
+        assert!((s[0] - 2.0e5 * alpha / 0.7).abs() < 1e-12 * s[0]);
+        let s = m.thermal_stress_per_kelvin(Analysis::PlaneStrain { thickness: 1.0 }, alpha);
+        assert!((s[1] - 2.0e5 * alpha / 0.4).abs() < 1e-12 * s[1]);
+        assert_eq!(s[2], 0.0);
+    }
+
+    #[test]
+    fn engineering_units() {
+        // Steel: 50 W/(m·K), 460 J/(kg·K), 7800 kg/m³ → ρc = 3.588 mJ/(mm³·K), a = 13.94 mm²/s.
+        let t = ThermalMaterial::from_engineering(50.0, 460.0, 7800.0, 1.2e-5);
+        assert!((t.heat_capacity - 3.588).abs() < 1e-12);
+        assert!((t.diffusivity() - 50.0 / 3.588).abs() < 1e-12);
+        assert!((film_coefficient(25.0) - 0.025).abs() < 1e-15);
     }
 }

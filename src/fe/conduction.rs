@@ -1,0 +1,665 @@
+//! Heat conduction by the same p-version elements as the elasticity: the same mesh, exact
+//! geometry and hierarchical basis, with one unknown per mode (the temperature). This module
+//! builds the operators of one body; the time integration is in [`reduced`] (the run's
+//! exact-in-time reduced model) and [`transient`] (a full-order reference for checks).
+//!
+//! # The equations
+//!
+//! A plane body of thickness t (mm) with conductivity k (mW/(mm·K)), heat capacity ρc
+//! (mJ/(mm³·K)) and, for a thin plate in plane stress, faces losing heat to T∞ with a film
+//! coefficient h_f (mW/(mm²·K)) on both sides:
+//!
+//! ρc ∂T/∂t = ∇·(k ∇T) − (2 h_f / t)(T − T∞)
+//!
+//! with, on each edge, a held temperature, convection −k ∂T/∂n = h (T − T∞), a given inward
+//! flux q (mW/mm²; the frictional heat of the contact) or nothing (insulated). Multiplying by
+//! a shape function N_a and integrating over the body's volume gives C Ṫ + K T = f with
+//!
+//! - C_ab = t ∫ ρc N_a N_b dA (capacity, mJ/K),
+//! - K_ab = t ∫ k ∇N_a·∇N_b dA + 2 h_f ∫ N_a N_b dA + t Σ_edges ∫ h N_a N_b ds (mW/K),
+//! - f_a = 2 h_f T∞ ∫ N_a dA + t Σ_edges ∫ h T∞ N_a ds + t ∫ q N_a ds (mW).
+//!
+//! Units: mm, s, mJ (= N·mm), mW, °C for temperatures (K for differences). The element
+//! integrals use the elasticity's Gauss rules (exact on parallelograms, p + 3 points on curved
+//! elements), so a temperature that the basis contains is reproduced to round-off.
+//!
+//! # Unknowns
+//!
+//! Unlike the elasticity, the internal modes are kept: the capacity couples them in time, so
+//! static condensation would not be exact. The *full* numbering is the scalar boundary dofs
+//! ([`DofMap::scalar`]) followed by each element's internal modes. A held temperature is a
+//! constant along its edge: its vertex dofs take the value, its edge modes zero; held dofs
+//! are eliminated, and the matrices are over the *free* dofs only (positive definite unless
+//! no edge holds or convects and no face convects: then K has the constants in its kernel).
+
+use crate::basis::{QuadBasis, Space};
+use crate::dofs::DofMap;
+use crate::geometry::Point;
+use crate::material::ThermalMaterial;
+use crate::mesh::Mesh;
+use crate::quadrature::gauss_legendre;
+use faer::sparse::{SparseColMat, Triplet};
+use faer::Mat;
+use std::collections::HashMap;
+
+pub mod reduced;
+pub mod transient;
+
+/// Errors of the conduction stage.
+#[derive(Debug, thiserror::Error)]
+pub enum ConductionError {
+    /// A material of an element has no thermal properties (or non-positive ones).
+    #[error("material {material} of an element of body \"{body}\" has no valid thermal properties (conductivity and heat capacity must be positive)")]
+    Material {
+        /// Body name.
+        body: String,
+        /// Material index.
+        material: usize,
+    },
+    /// The sparse matrices could not be built or factorised.
+    #[error("body \"{body}\": {message}")]
+    Numerical {
+        /// Body name.
+        body: String,
+        /// What failed.
+        message: String,
+    },
+}
+
+/// What happens on a piece of boundary.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum EdgeCondition {
+    /// Temperature held at this value, °C.
+    Temperature(f64),
+    /// Convection −k ∂T/∂n = h (T − T∞): `coefficient` h in mW/(mm²·K), `ambient` T∞ in °C.
+    Convection {
+        /// Film coefficient h, mW/(mm²·K).
+        coefficient: f64,
+        /// Ambient temperature T∞, °C.
+        ambient: f64,
+    },
+}
+
+/// A part of one element edge: local edge `local` of `element`, between edge parameters
+/// `t[0] < t[1]` in [−1, 1] (the whole edge is [−1, 1]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EdgePiece {
+    /// Element index.
+    pub element: usize,
+    /// Local edge 0..4.
+    pub local: usize,
+    /// Parameter interval along the edge.
+    pub t: [f64; 2],
+}
+
+/// Convection from both faces of a plane-stress plate: a sink 2h/t (T − T∞) per unit volume.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FaceConvection {
+    /// Film coefficient h of each face, mW/(mm²·K).
+    pub coefficient: f64,
+    /// Ambient temperature T∞, °C.
+    pub ambient: f64,
+}
+
+/// The thermal description of one body, as the conduction stage needs it.
+#[derive(Clone, Debug)]
+pub struct ConductionSpec {
+    /// Body name (for messages).
+    pub name: String,
+    /// Degree and space of the elements.
+    pub p: usize,
+    /// Tensor-product or trunk space.
+    pub space: Space,
+    /// Thickness t, mm.
+    pub thickness: f64,
+    /// Thermal properties indexed by the elements' `material`; None for a material without.
+    pub materials: Vec<Option<ThermalMaterial>>,
+    /// Edge conditions (every other edge is insulated).
+    pub edges: Vec<(EdgePiece, EdgeCondition)>,
+    /// Convection from the faces (plane stress only).
+    pub faces: Option<FaceConvection>,
+}
+
+/// One body's heat conduction operators over its free dofs.
+pub struct ConductionBody {
+    /// Body name.
+    pub name: String,
+    /// The mesh.
+    pub mesh: Mesh,
+    /// The shape functions.
+    pub basis: QuadBasis,
+    /// Scalar numbering of the boundary dofs.
+    pub dofs: DofMap,
+    /// Thickness t, mm.
+    pub thickness: f64,
+    /// Free index of each full unknown (`usize::MAX` where the temperature is held).
+    free_of: Vec<usize>,
+    /// Value of each full unknown where held (°C for vertex dofs, 0 for edge modes).
+    held: Vec<Option<f64>>,
+    /// K over the free dofs (mW/K), both triangles.
+    pub conductivity: SparseColMat<usize, f64>,
+    /// C over the free dofs (mJ/K), both triangles.
+    pub capacity: SparseColMat<usize, f64>,
+    /// The constant sources over the free dofs (mW): ambient terms, minus K times the held
+    /// temperatures.
+    pub load: Vec<f64>,
+    /// K and f over the full unknowns, for the heat flowing in where temperatures are held.
+    full_conductivity: SparseColMat<usize, f64>,
+    full_load: Vec<f64>,
+    /// C over the full unknowns, for the heat stored.
+    full_capacity: SparseColMat<usize, f64>,
+    /// Edge pieces and faces with their conditions, for the heat they pass.
+    edges: Vec<(EdgePiece, EdgeCondition)>,
+    faces: Option<FaceConvection>,
+    /// Whether some edge holds or convects or the faces convect: heat can leave.
+    pub has_exit: bool,
+}
+
+/// Element matrices of one element: conductivity (with the face sink), capacity, and the
+/// face load per unit ambient temperature, over the element's modes.
+struct ElementMatrices {
+    conductivity: Mat<f64>,
+    capacity: Mat<f64>,
+    /// ∫ N_a dA · t (mm³), for the face load and the stored heat.
+    volume: Vec<f64>,
+}
+
+fn element_matrices(
+    mesh: &Mesh,
+    element: usize,
+    basis: &QuadBasis,
+    material: &ThermalMaterial,
+    thickness: f64,
+    face_coefficient: f64,
+    nq: usize,
+) -> ElementMatrices {
+    let rule = gauss_legendre(nq);
+    let tab = basis.tabulate(&rule.points, &rule.points);
+    let n = basis.n_modes();
+    let n_points = nq * nq;
+    let mut gx = Mat::<f64>::zeros(n, n_points);
+    let mut gz = Mat::<f64>::zeros(n, n_points);
+    let mut nv = Mat::<f64>::zeros(n, n_points);
+    let mut volume = vec![0.0; n];
+    for iy in 0..nq {
+        for ix in 0..nq {
+            let q = iy * nq + ix;
+            let (j, det) = mesh.jacobian(element, rule.points[ix], rule.points[iy]);
+            let w = rule.weights[ix] * rule.weights[iy] * det;
+            let scale = w.sqrt();
+            let (dxi_dx, dxi_dz) = (j[1][1] / det, -j[0][1] / det);
+            let (deta_dx, deta_dz) = (-j[1][0] / det, j[0][0] / det);
+            for a in 0..n {
+                let idx = a * n_points + q;
+                let (nxi, neta) = (tab.d_xi[idx], tab.d_eta[idx]);
+                gx[(a, q)] = (nxi * dxi_dx + neta * deta_dx) * scale;
+                gz[(a, q)] = (nxi * dxi_dz + neta * deta_dz) * scale;
+                nv[(a, q)] = tab.values[idx] * scale;
+                volume[a] += tab.values[idx] * w * thickness;
+            }
+        }
+    }
+    let gradients = &gx * gx.transpose() + &gz * gz.transpose();
+    let mass = &nv * nv.transpose();
+    let conductivity = Mat::from_fn(n, n, |a, b| {
+        thickness * material.conductivity * gradients[(a, b)]
+            + 2.0 * face_coefficient * mass[(a, b)]
+    });
+    let capacity = Mat::from_fn(n, n, |a, b| {
+        thickness * material.heat_capacity * mass[(a, b)]
+    });
+    ElementMatrices {
+        conductivity,
+        capacity,
+        volume,
+    }
+}
+
+/// The full unknown of each of an element's modes, with its sign.
+fn element_unknowns(
+    mesh: &Mesh,
+    dofs: &DofMap,
+    basis: &QuadBasis,
+    element: usize,
+) -> Vec<(usize, f64)> {
+    let ed = dofs.element_dofs(mesh, element);
+    let nb = basis.n_boundary();
+    let ni = basis.n_internal();
+    let first_internal = dofs.n_dofs() + element * ni;
+    (0..basis.n_modes())
+        .map(|a| {
+            if a < nb {
+                (ed.global[a], ed.sign[a])
+            } else {
+                (first_internal + a - nb, 1.0)
+            }
+        })
+        .collect()
+}
+
+/// Symmetric sparse matrix (both triangles) from triplets; duplicates are summed.
+fn sparse(
+    n: usize,
+    triplets: &[Triplet<usize, usize, f64>],
+) -> Result<SparseColMat<usize, f64>, String> {
+    SparseColMat::try_new_from_triplets(n, n, triplets).map_err(|e| format!("{e:?}"))
+}
+
+/// y += A x for a sparse matrix stored in full (both triangles).
+pub fn add_product(a: &SparseColMat<usize, f64>, x: &[f64], y: &mut [f64]) {
+    let col_ptr = a.symbolic().col_ptr();
+    let row_idx = a.symbolic().row_idx();
+    let values = a.val();
+    for (j, &xj) in x.iter().enumerate() {
+        if xj == 0.0 {
+            continue;
+        }
+        let range = col_ptr[j]..col_ptr[j + 1];
+        for (&i, &v) in row_idx[range.clone()].iter().zip(&values[range]) {
+            y[i] += v * xj;
+        }
+    }
+}
+
+impl ConductionBody {
+    /// Build the operators of one body on `mesh`.
+    pub fn new(mesh: &Mesh, spec: &ConductionSpec) -> Result<ConductionBody, ConductionError> {
+        let basis = QuadBasis::new(spec.p, spec.space);
+        let dofs = DofMap::scalar(mesh, spec.p);
+        let n_full = dofs.n_dofs() + mesh.elements.len() * basis.n_internal();
+        let face = spec.faces.map_or(0.0, |f| f.coefficient);
+        let mut k_trip = Vec::new();
+        let mut c_trip = Vec::new();
+        let mut load = vec![0.0; n_full];
+        let mut cache: HashMap<Vec<i64>, ElementMatrices> = HashMap::new();
+        for element in 0..mesh.elements.len() {
+            let m = mesh.elements[element].material;
+            let material = spec.materials.get(m).copied().flatten().filter(|t| {
+                t.conductivity > 0.0 && t.heat_capacity > 0.0 && t.conductivity.is_finite()
+            });
+            let Some(material) = material else {
+                return Err(ConductionError::Material {
+                    body: spec.name.clone(),
+                    material: m,
+                });
+            };
+            let nq = crate::elasticity::quadrature_points(mesh, element, spec.p);
+            let key = crate::elasticity::geometry_key(mesh, element, m, nq);
+            let matrices = cache.entry(key).or_insert_with(|| {
+                element_matrices(mesh, element, &basis, &material, spec.thickness, face, nq)
+            });
+            let unknowns = element_unknowns(mesh, &dofs, &basis, element);
+            for (a, &(ga, sa)) in unknowns.iter().enumerate() {
+                for (b, &(gb, sb)) in unknowns.iter().enumerate() {
+                    let s = sa * sb;
+                    k_trip.push(Triplet::new(ga, gb, s * matrices.conductivity[(a, b)]));
+                    c_trip.push(Triplet::new(ga, gb, s * matrices.capacity[(a, b)]));
+                }
+                if let Some(f) = spec.faces {
+                    // The face sink's ambient part: 2 h_f T∞ ∫ N_a dA = 2 h_f T∞ (t ∫N_a dA)/t.
+                    load[ga] +=
+                        sa * 2.0 * f.coefficient * f.ambient * matrices.volume[a] / spec.thickness;
+                }
+            }
+        }
+        let mut held: Vec<Option<f64>> = vec![None; n_full];
+        for (piece, condition) in &spec.edges {
+            match *condition {
+                EdgeCondition::Convection {
+                    coefficient,
+                    ambient,
+                } => add_convection(
+                    mesh,
+                    &dofs,
+                    &basis,
+                    piece,
+                    spec.thickness * coefficient,
+                    ambient,
+                    &mut k_trip,
+                    &mut load,
+                ),
+                EdgeCondition::Temperature(value) => {
+                    let trace = basis.edge_trace(piece.local);
+                    let unknowns = element_unknowns(mesh, &dofs, &basis, piece.element);
+                    for (k, &mode) in trace.iter().enumerate() {
+                        // Vertex modes take the value; edge modes are zero for a constant.
+                        held[unknowns[mode].0] = Some(if k < 2 { value } else { 0.0 });
+                    }
+                }
+            }
+        }
+        let numerical = |message: String| ConductionError::Numerical {
+            body: spec.name.clone(),
+            message,
+        };
+        let full_conductivity = sparse(n_full, &k_trip).map_err(numerical)?;
+        let full_capacity = sparse(n_full, &c_trip).map_err(numerical)?;
+        let mut free_of = vec![usize::MAX; n_full];
+        let mut n_free = 0;
+        for (i, h) in held.iter().enumerate() {
+            if h.is_none() {
+                free_of[i] = n_free;
+                n_free += 1;
+            }
+        }
+        let restrict = |triplets: &[Triplet<usize, usize, f64>]| {
+            let kept: Vec<_> = triplets
+                .iter()
+                .filter(|t| free_of[t.row] != usize::MAX && free_of[t.col] != usize::MAX)
+                .map(|t| Triplet::new(free_of[t.row], free_of[t.col], t.val))
+                .collect();
+            sparse(n_free, &kept)
+        };
+        let conductivity = restrict(&k_trip).map_err(numerical)?;
+        let capacity = restrict(&c_trip).map_err(numerical)?;
+        // The held temperatures' lift: f_free − K_free,held T_held.
+        let held_values: Vec<f64> = held.iter().map(|h| h.unwrap_or(0.0)).collect();
+        let mut lift = vec![0.0; n_full];
+        add_product(&full_conductivity, &held_values, &mut lift);
+        let mut free_load = vec![0.0; n_free];
+        for i in 0..n_full {
+            if free_of[i] != usize::MAX {
+                free_load[free_of[i]] = load[i] - lift[i];
+            }
+        }
+        let has_exit = spec.faces.is_some_and(|f| f.coefficient > 0.0)
+            || spec.edges.iter().any(|(_, c)| match c {
+                EdgeCondition::Temperature(_) => true,
+                EdgeCondition::Convection { coefficient, .. } => *coefficient > 0.0,
+            });
+        Ok(ConductionBody {
+            name: spec.name.clone(),
+            mesh: mesh.clone(),
+            basis,
+            dofs,
+            thickness: spec.thickness,
+            free_of,
+            held,
+            conductivity,
+            capacity,
+            load: free_load,
+            full_conductivity,
+            full_load: load,
+            full_capacity,
+            edges: spec.edges.clone(),
+            faces: spec.faces,
+            has_exit,
+        })
+    }
+
+    /// Number of free unknowns.
+    pub fn n_free(&self) -> usize {
+        self.conductivity.nrows()
+    }
+
+    /// Number of full unknowns (held ones included).
+    pub fn n_full(&self) -> usize {
+        self.free_of.len()
+    }
+
+    /// The full field (°C per full unknown) of free values `free`.
+    pub fn expand(&self, free: &[f64]) -> Vec<f64> {
+        self.free_of
+            .iter()
+            .zip(&self.held)
+            .map(|(&f, h)| {
+                if f == usize::MAX {
+                    h.unwrap_or(0.0)
+                } else {
+                    free[f]
+                }
+            })
+            .collect()
+    }
+
+    /// The free values of a full field.
+    pub fn restrict(&self, full: &[f64]) -> Vec<f64> {
+        let mut free = vec![0.0; self.n_free()];
+        for (i, &f) in self.free_of.iter().enumerate() {
+            if f != usize::MAX {
+                free[f] = full[i];
+            }
+        }
+        free
+    }
+
+    /// The free index of full unknown `i`, if it is free.
+    pub fn free_index(&self, i: usize) -> Option<usize> {
+        (self.free_of[i] != usize::MAX).then_some(self.free_of[i])
+    }
+
+    /// The field of a uniform temperature `value` (°C) over the full unknowns: the vertex
+    /// modes carry it, every other mode is zero (the vertex modes sum to one).
+    pub fn uniform(&self, value: f64) -> Vec<f64> {
+        let mut field = vec![0.0; self.n_full()];
+        for v in 0..self.mesh.vertices.len() {
+            field[self.dofs.vertex_dof(v, 0)] = value;
+        }
+        field
+    }
+
+    /// The temperature at edge parameter `t` of local edge `local` of `element` as a
+    /// combination of full unknowns: (unknown, coefficient) pairs.
+    pub fn edge_trace(&self, element: usize, local: usize, t: f64) -> Vec<(usize, f64)> {
+        let (xi, eta) = Mesh::edge_reference_point(local, t);
+        self.point_trace(element, xi, eta)
+            .into_iter()
+            .filter(|&(_, c)| c != 0.0)
+            .collect()
+    }
+
+    /// The temperature at reference point (ξ, η) of `element` as (unknown, coefficient) pairs.
+    pub fn point_trace(&self, element: usize, xi: f64, eta: f64) -> Vec<(usize, f64)> {
+        let tab = self.basis.tabulate(&[xi], &[eta]);
+        element_unknowns(&self.mesh, &self.dofs, &self.basis, element)
+            .into_iter()
+            .zip(&tab.values)
+            .map(|((g, s), &v)| (g, s * v))
+            .collect()
+    }
+
+    /// The temperature (°C) of full field `field` at point `x` (mm), None outside the body.
+    pub fn value_at(&self, field: &[f64], x: Point) -> Option<f64> {
+        let (element, xi, eta) = self.mesh.locate(x)?;
+        Some(
+            self.point_trace(element, xi, eta)
+                .iter()
+                .map(|&(g, c)| c * field[g])
+                .sum(),
+        )
+    }
+
+    /// The stationary temperature (full field, °C) under the constant sources plus `flux`
+    /// (mW per full unknown, e.g. from [`ConductionBody::edge_flux_load`]). Fails if no heat
+    /// can leave the body (K singular).
+    pub fn stationary(&self, flux: &[f64]) -> Result<Vec<f64>, ConductionError> {
+        let mut rhs = self.load.clone();
+        for (i, &f) in self.free_of.iter().enumerate() {
+            if f != usize::MAX {
+                rhs[f] += flux[i];
+            }
+        }
+        let solved = transient::solve_spd(&self.conductivity, &rhs).ok_or_else(|| {
+            ConductionError::Numerical {
+                body: self.name.clone(),
+                message: "the conductivity matrix is singular: no edge holds a temperature or convects, so the heat cannot leave and there is no stationary temperature".into(),
+            }
+        })?;
+        Ok(self.expand(&solved))
+    }
+
+    /// The load (mW per full unknown) of a uniform inward flux `q` (mW/mm²) on `piece`.
+    pub fn edge_flux_load(&self, piece: &EdgePiece, q: f64) -> Vec<f64> {
+        let mut load = vec![0.0; self.n_full()];
+        for (tp, ds) in piece_quadrature(&self.mesh, piece, self.basis.p + 2) {
+            for (g, c) in self.edge_trace(piece.element, piece.local, tp) {
+                load[g] += q * c * ds * self.thickness;
+            }
+        }
+        load
+    }
+
+    /// Heat stored in `field` relative to the uniform temperature `reference` (mJ):
+    /// t ∫ ρc (T − T_ref) dA.
+    pub fn stored_heat(&self, field: &[f64], reference: f64) -> f64 {
+        let ones = self.uniform(1.0);
+        let mut c_ones = vec![0.0; self.n_full()];
+        add_product(&self.full_capacity, &ones, &mut c_ones);
+        c_ones
+            .iter()
+            .zip(field)
+            .map(|(c, t)| c * (t - reference))
+            .sum()
+    }
+
+    /// Heat flowing out of the body (mW) at temperature `field` (full, °C): through
+    /// convecting edges and faces, and through held edges (the reaction at the held
+    /// unknowns: the residual of K T − f there, plus C Ṫ for a transient, `rate` being dT/dt
+    /// in K/s per full unknown). Frictional heat is not counted: it enters the free unknowns.
+    pub fn heat_out(&self, field: &[f64], rate: Option<&[f64]>) -> HeatFlows {
+        let mut convected = 0.0;
+        for (piece, condition) in &self.edges {
+            if let EdgeCondition::Convection {
+                coefficient,
+                ambient,
+            } = *condition
+            {
+                for (tp, ds) in piece_quadrature(&self.mesh, piece, self.basis.p + 2) {
+                    let t: f64 = self
+                        .edge_trace(piece.element, piece.local, tp)
+                        .iter()
+                        .map(|&(g, c)| c * field[g])
+                        .sum();
+                    convected += coefficient * (t - ambient) * ds * self.thickness;
+                }
+            }
+        }
+        let faces = self.faces.map_or(0.0, |f| self.face_loss(field, f));
+        let mut residual = vec![0.0; self.n_full()];
+        add_product(&self.full_conductivity, field, &mut residual);
+        if let Some(rate) = rate {
+            add_product(&self.full_capacity, rate, &mut residual);
+        }
+        let mut held_out = 0.0;
+        for v in 0..self.mesh.vertices.len() {
+            let d = self.dofs.vertex_dof(v, 0);
+            if self.held[d].is_some() {
+                // The reaction is the heat the held edge supplies; it leaves when negative.
+                held_out -= residual[d] - self.full_load[d];
+            }
+        }
+        HeatFlows {
+            convected,
+            faces,
+            held: held_out,
+        }
+    }
+
+    /// Heat lost through both faces (mW): 2 h_f ∫ (T − T∞) dA.
+    fn face_loss(&self, field: &[f64], faces: FaceConvection) -> f64 {
+        let mut loss = 0.0;
+        for element in 0..self.mesh.elements.len() {
+            let nq = crate::elasticity::quadrature_points(&self.mesh, element, self.basis.p);
+            let rule = gauss_legendre(nq);
+            let tab = self.basis.tabulate(&rule.points, &rule.points);
+            let unknowns = element_unknowns(&self.mesh, &self.dofs, &self.basis, element);
+            for iy in 0..nq {
+                for ix in 0..nq {
+                    let q = iy * nq + ix;
+                    let (_, det) = self
+                        .mesh
+                        .jacobian(element, rule.points[ix], rule.points[iy]);
+                    let t: f64 = unknowns
+                        .iter()
+                        .enumerate()
+                        .map(|(a, &(g, s))| s * tab.values[a * tab.n_points + q] * field[g])
+                        .sum();
+                    loss += 2.0
+                        * faces.coefficient
+                        * (t - faces.ambient)
+                        * rule.weights[ix]
+                        * rule.weights[iy]
+                        * det;
+                }
+            }
+        }
+        loss
+    }
+}
+
+/// Heat leaving a body, mW.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct HeatFlows {
+    /// Through convecting edges.
+    pub convected: f64,
+    /// Through the faces of a plane-stress plate.
+    pub faces: f64,
+    /// Through edges at a held temperature.
+    pub held: f64,
+}
+
+impl HeatFlows {
+    /// All the heat leaving, mW.
+    pub fn total(&self) -> f64 {
+        self.convected + self.faces + self.held
+    }
+}
+
+/// Gauss points (t, ds) on an edge piece: `n` points, ds the arc-length weight in mm.
+pub fn piece_quadrature(mesh: &Mesh, piece: &EdgePiece, n: usize) -> Vec<(f64, f64)> {
+    let rule = gauss_legendre(n);
+    let half = 0.5 * (piece.t[1] - piece.t[0]);
+    rule.points
+        .iter()
+        .zip(&rule.weights)
+        .map(|(&r, &w)| {
+            let t = piece.t[0] + half * (r + 1.0);
+            let (tangent, _) = mesh.edge_frame(piece.element, piece.local, t);
+            (t, w * half * tangent[0].hypot(tangent[1]))
+        })
+        .collect()
+}
+
+/// Add an edge piece's convection t h ∫ N_a N_b ds to K and t h T∞ ∫ N_a ds to the load;
+/// `th` = t h (mW/(mm·K)).
+#[allow(clippy::too_many_arguments)]
+fn add_convection(
+    mesh: &Mesh,
+    dofs: &DofMap,
+    basis: &QuadBasis,
+    piece: &EdgePiece,
+    th: f64,
+    ambient: f64,
+    k_trip: &mut Vec<Triplet<usize, usize, f64>>,
+    load: &mut [f64],
+) {
+    let trace = basis.edge_trace(piece.local);
+    let unknowns = element_unknowns(mesh, dofs, basis, piece.element);
+    let n = trace.len();
+    let mut matrix = vec![0.0; n * n];
+    let mut vector = vec![0.0; n];
+    for (tp, ds) in piece_quadrature(mesh, piece, basis.p + 2) {
+        let (xi, eta) = Mesh::edge_reference_point(piece.local, tp);
+        let tab = basis.tabulate(&[xi], &[eta]);
+        for (a, &ma) in trace.iter().enumerate() {
+            let na = unknowns[ma].1 * tab.values[ma];
+            vector[a] += na * ds;
+            for (b, &mb) in trace.iter().enumerate() {
+                matrix[a * n + b] += na * unknowns[mb].1 * tab.values[mb] * ds;
+            }
+        }
+    }
+    for (a, &ma) in trace.iter().enumerate() {
+        load[unknowns[ma].0] += th * ambient * vector[a];
+        for (b, &mb) in trace.iter().enumerate() {
+            k_trip.push(Triplet::new(
+                unknowns[ma].0,
+                unknowns[mb].0,
+                th * matrix[a * n + b],
+            ));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

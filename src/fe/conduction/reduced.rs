@@ -1,0 +1,283 @@
+//! The heat problem reduced to the few hundred shapes its inputs can excite, and integrated
+//! exactly in time in them.
+//!
+//! # Why a reduced model
+//!
+//! A wear run takes thousands of steps, each a contact solve of a few microseconds. The heat
+//! problem of punch-b40 has 7 000 unknowns with their internal modes; one sparse solve of it
+//! costs more than a whole contact step, and a time integrator needs one or two per step, or
+//! many more to be accurate over a step that spans ten half periods. But the heat enters
+//! only through the n contact points (the frictional flux, one value per point) and a few
+//! fixed sources (ambient, held edges, the initial field), and the run needs the temperature
+//! only through linear functionals (the thermal gap and the temperatures at the contact
+//! points and probes). So the field is sought in the space that those inputs excite.
+//!
+//! # The space: rational Krylov
+//!
+//! With B the input vectors (N × m), V spans (K + σ_i C)⁻¹ B for a few real shifts σ_i ≥ 0
+//! (and (K⁻¹C) K⁻¹ B at σ = 0, a second moment): the Galerkin projection onto V reproduces
+//! the transfer function H(s) = (K + sC)⁻¹ B of the full model and its derivative at every
+//! shift (the projection of a symmetric pencil matches two moments per shift). σ = 0 makes
+//! every stationary temperature under the inputs exact, so the steady state and the energy
+//! balance of the reduced model are those of the full one. The shifts between 1/(the
+//! slowest time of the problem) and 1/(the shortest step) place the reduced model's error
+//! where the run does not look: a response faster than the shortest step has decayed by the
+//! step's end. V is orthonormalised in the capacity inner product (twice, dropping
+//! directions whose Gram eigenvalue falls below 10⁻¹² of the largest: the blocks of nearby
+//! shifts are nearly parallel).
+//!
+//! # The modes and their exact integration
+//!
+//! In V the pencil is VᵀKV a + ȧ = Vᵀ f (VᵀCV = I); its eigenvectors give modes Φ = V Q with
+//! ΦᵀCΦ = I and ΦᵀKΦ = diag(λ_j). Each modal coordinate obeys ȧ_j = −λ_j a_j + φ_jᵀ f(t), which
+//! is integrated in closed form for the time profiles of the run: a source held constant for
+//! a time τ, a_j ← e^{−λ_j τ} a_j + (1 − e^{−λ_j τ})/λ_j φ_jᵀ f, and the frictional heat of a
+//! half period of reciprocating sliding, whose speed u₀ω sin ωs makes the flux a half sine:
+//! ∫₀^{π/ω} e^{−λ(π/ω − s)} sin ωs ds = ω (1 + e^{−λπ/ω})/(λ² + ω²). No time step enters: the
+//! only approximation is the space, which the tests measure against the full model
+//! ([`super::transient`]) on the shipped and on refined meshes.
+
+use super::add_product;
+use super::transient::{combine, SpdFactor};
+use faer::sparse::SparseColMat;
+use faer::{Mat, MatRef, Side};
+
+/// Relative size of a Gram eigenvalue below which a direction of the basis is dropped as
+/// dependent on the others.
+const DROP: f64 = 1e-12;
+
+/// The modes of the reduced heat problem.
+#[derive(Clone, Debug)]
+pub struct ReducedModel {
+    /// Φ (N × r): C-orthonormal, K-orthogonal modes over the free unknowns.
+    pub modes: Mat<f64>,
+    /// λ_j (1/s), rising; 0 for a body that keeps its heat (no edge or face lets it out).
+    pub rates: Vec<f64>,
+}
+
+/// Errors of the reduction.
+#[derive(Debug, thiserror::Error)]
+pub enum ReductionError {
+    /// K + σC is not positive definite at a shift.
+    #[error("the heat problem's matrix K + {shift} C is not positive definite (at σ = 0: no heat can leave; choose shifts > 0)")]
+    NotDefinite {
+        /// The shift σ, 1/s.
+        shift: f64,
+    },
+    /// An eigendecomposition failed.
+    #[error("the reduced heat problem's eigendecomposition failed")]
+    Eigen,
+}
+
+/// Columns of A x for every column x of `v`.
+fn sparse_times(a: &SparseColMat<usize, f64>, v: MatRef<'_, f64>) -> Mat<f64> {
+    let mut out = Mat::<f64>::zeros(v.nrows(), v.ncols());
+    let mut column = vec![0.0; v.nrows()];
+    let mut x = vec![0.0; v.nrows()];
+    for j in 0..v.ncols() {
+        column.iter_mut().for_each(|c| *c = 0.0);
+        for (i, xi) in x.iter_mut().enumerate() {
+            *xi = v[(i, j)];
+        }
+        add_product(a, &x, &mut column);
+        for (i, &c) in column.iter().enumerate() {
+            out[(i, j)] = c;
+        }
+    }
+    out
+}
+
+/// Orthonormalise the columns of `v` in the inner product of `c`, dropping dependent ones.
+fn orthonormalise(c: &SparseColMat<usize, f64>, v: Mat<f64>) -> Result<Mat<f64>, ReductionError> {
+    let mut v = v;
+    for _ in 0..2 {
+        let cv = sparse_times(c, v.as_ref());
+        let gram = v.transpose() * &cv;
+        let eigen = gram
+            .self_adjoint_eigen(Side::Lower)
+            .map_err(|_| ReductionError::Eigen)?;
+        let s = eigen.S().column_vector();
+        let largest = (0..s.nrows()).map(|i| s[i]).fold(0.0f64, f64::max);
+        let kept: Vec<usize> = (0..s.nrows()).filter(|&i| s[i] > DROP * largest).collect();
+        let u = eigen.U();
+        let scaled = Mat::from_fn(u.nrows(), kept.len(), |r, j| {
+            u[(r, kept[j])] / s[kept[j]].sqrt()
+        });
+        v = &v * &scaled;
+    }
+    Ok(v)
+}
+
+impl ReducedModel {
+    /// The reduced model of C Ṫ + K T = f over the space of `inputs` (N × m, one input per
+    /// column) at `shifts` σ ≥ 0 (1/s), with the vectors `extra` added as they are (a
+    /// constant field, the initial field). At σ = 0 the second moment K⁻¹ C K⁻¹ B is added too.
+    pub fn new(
+        conductivity: &SparseColMat<usize, f64>,
+        capacity: &SparseColMat<usize, f64>,
+        inputs: MatRef<'_, f64>,
+        shifts: &[f64],
+        extra: &[Vec<f64>],
+    ) -> Result<ReducedModel, ReductionError> {
+        let n = conductivity.nrows();
+        let mut blocks: Vec<Mat<f64>> = Vec::new();
+        for &shift in shifts {
+            let matrix = if shift == 0.0 {
+                conductivity.clone()
+            } else {
+                combine(1.0, conductivity, shift, capacity)
+            };
+            let factor = SpdFactor::new(&matrix).ok_or(ReductionError::NotDefinite { shift })?;
+            let mut w = inputs.to_owned();
+            factor.solve_in_place(&mut w);
+            if shift == 0.0 {
+                let mut second = sparse_times(capacity, w.as_ref());
+                factor.solve_in_place(&mut second);
+                blocks.push(second);
+            }
+            blocks.push(w);
+        }
+        let columns: usize = blocks.iter().map(|b| b.ncols()).sum::<usize>() + extra.len();
+        let mut v = Mat::<f64>::zeros(n, columns);
+        let mut j = 0;
+        for block in &blocks {
+            for c in 0..block.ncols() {
+                for i in 0..n {
+                    v[(i, j)] = block[(i, c)];
+                }
+                j += 1;
+            }
+        }
+        for e in extra {
+            for i in 0..n {
+                v[(i, j)] = e[i];
+            }
+            j += 1;
+        }
+        // Unit columns first: the blocks of large shifts are orders of magnitude smaller.
+        let cv = sparse_times(capacity, v.as_ref());
+        for c in 0..columns {
+            let norm: f64 = (0..n).map(|i| v[(i, c)] * cv[(i, c)]).sum::<f64>().sqrt();
+            if norm > 0.0 {
+                for i in 0..n {
+                    v[(i, c)] /= norm;
+                }
+            }
+        }
+        let v = orthonormalise(capacity, v)?;
+        let kv = sparse_times(conductivity, v.as_ref());
+        let reduced = v.transpose() * &kv;
+        let eigen = reduced
+            .self_adjoint_eigen(Side::Lower)
+            .map_err(|_| ReductionError::Eigen)?;
+        let s = eigen.S().column_vector();
+        // Round-off leaves the rates of a body without exit at ±1e-16 of the largest.
+        let largest = (0..s.nrows()).map(|i| s[i].abs()).fold(0.0f64, f64::max);
+        let rates = (0..s.nrows())
+            .map(|i| if s[i] < 1e-13 * largest { 0.0 } else { s[i] })
+            .collect();
+        Ok(ReducedModel {
+            modes: &v * eigen.U(),
+            rates,
+        })
+    }
+
+    /// Number of modes r.
+    pub fn len(&self) -> usize {
+        self.rates.len()
+    }
+
+    /// Whether there are no modes.
+    pub fn is_empty(&self) -> bool {
+        self.rates.is_empty()
+    }
+
+    /// Φᵀ f for each column f of `loads` (N × m): the modal loads (r × m).
+    pub fn project(&self, loads: MatRef<'_, f64>) -> Mat<f64> {
+        self.modes.transpose() * loads
+    }
+
+    /// The modal coordinates of a field given over the free unknowns: Φᵀ C x.
+    pub fn coordinates(&self, capacity: &SparseColMat<usize, f64>, field: &[f64]) -> Vec<f64> {
+        let mut cx = vec![0.0; field.len()];
+        add_product(capacity, field, &mut cx);
+        (0..self.len())
+            .map(|j| (0..field.len()).map(|i| self.modes[(i, j)] * cx[i]).sum())
+            .collect()
+    }
+
+    /// The field (free unknowns) of modal coordinates `a`: Φ a.
+    pub fn field(&self, a: &[f64]) -> Vec<f64> {
+        (0..self.modes.nrows())
+            .map(|i| (0..self.len()).map(|j| self.modes[(i, j)] * a[j]).sum())
+            .collect()
+    }
+}
+
+/// e^{−λτ} for a rate λ (1/s) and a time τ (s).
+pub fn decay(rate: f64, time: f64) -> f64 {
+    (-rate * time).exp()
+}
+
+/// ∫₀^τ e^{−λ(τ − s)} ds = (1 − e^{−λτ})/λ (s): the response after τ to a unit source held
+/// constant; τ itself for λ = 0.
+pub fn constant_gain(rate: f64, time: f64) -> f64 {
+    let x = rate * time;
+    if x < 1e-8 {
+        // The series 1 − x/2 + x²/6: the closed form loses its digits for small x.
+        time * (1.0 - 0.5 * x)
+    } else {
+        -(-x).exp_m1() / rate
+    }
+}
+
+/// ∫₀^{π/ω} e^{−λ(π/ω − s)} sin ωs ds = ω (1 + e^{−λπ/ω})/(λ² + ω²) (s): the response at the
+/// end of a half period to a source of amplitude 1 whose time profile is sin ωs.
+pub fn half_sine_gain(rate: f64, omega: f64) -> f64 {
+    omega * (1.0 + decay(rate, std::f64::consts::PI / omega)) / (rate * rate + omega * omega)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Simpson's rule of the convolution, fine enough to judge the closed forms to 1e-10.
+    fn convolve(rate: f64, time: f64, profile: impl Fn(f64) -> f64) -> f64 {
+        let n = 20_000;
+        let h = time / n as f64;
+        (0..=n)
+            .map(|k| {
+                let s = k as f64 * h;
+                let w = if k == 0 || k == n {
+                    1.0
+                } else if k % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
+                w * (-rate * (time - s)).exp() * profile(s)
+            })
+            .sum::<f64>()
+            * h
+            / 3.0
+    }
+
+    #[test]
+    fn gains_are_the_convolutions() {
+        for rate in [0.0, 1e-9, 0.3, 10.0, 400.0] {
+            let tau = 0.7;
+            let numeric = convolve(rate, tau, |_| 1.0);
+            assert!(
+                (constant_gain(rate, tau) - numeric).abs() < 1e-10 * tau,
+                "{rate}"
+            );
+            let omega = 10.0;
+            let half = std::f64::consts::PI / omega;
+            let numeric = convolve(rate, half, |s| (omega * s).sin());
+            assert!(
+                (half_sine_gain(rate, omega) - numeric).abs() < 1e-10,
+                "{rate}"
+            );
+        }
+    }
+}
