@@ -27,7 +27,9 @@ use std::sync::OnceLock;
 
 mod dissection;
 mod schur;
+mod thermal;
 pub use schur::{Row, Trace};
+pub use thermal::ThermalLoads;
 
 /// Errors of the elasticity stage.
 #[derive(Debug, thiserror::Error)]
@@ -231,7 +233,7 @@ pub(crate) fn geometry_key(mesh: &Mesh, element: usize, material: usize, nq: usi
     key
 }
 
-fn element_stiffness(
+pub(crate) fn element_stiffness(
     mesh: &Mesh,
     element: usize,
     basis: &QuadBasis,

@@ -1,0 +1,332 @@
+//! Thermal strain as a load on a body: the temperature field of the heat stage
+//! ([`crate::conduction`]) expands each element, σ = D (ε − ε_th) with ε_th = α′ ΔT (1, 1, 0)
+//! (α′ = α in plane stress, (1 + ν) α in plane strain, [`Material::thermal_stress_per_kelvin`]),
+//! so the load is f_a = t ∫ B_aᵀ D ε_th dA = t ∫ B_aᵀ s ΔT dA with s = D m α′.
+//!
+//! Per element, over the temperature's modes b (the same basis, one unknown per mode):
+//! F[(2a + c), b] = t ∫ ∂N_a/∂x_c s_c N_b dA. The internal displacement modes are condensed
+//! as the stiffness was: the boundary load is (F_b − Rᵀ F_i) ΔT and the internal modes are
+//! recovered as u_i = K_ii⁻¹ F_i ΔT − R u_b. Both matrices are kept per element type (equal
+//! geometry up to a translation, material and quadrature), as the stiffness is.
+
+use super::{element_stiffness, ElasticBody};
+use crate::material::Material;
+use crate::quadrature::gauss_legendre;
+use faer::linalg::solvers::Solve;
+use faer::{Mat, Side};
+
+/// The thermal load operators of one body.
+pub struct ThermalLoads {
+    /// Per element type: the condensed boundary load per unit ΔT mode, (F_b − Rᵀ F_i)
+    /// (N/K, 2·4p × n_modes), and the internal response K_ii⁻¹ F_i (mm/K).
+    types: Vec<(Mat<f64>, Mat<f64>)>,
+    /// Expansion coefficient α (1/K) of each material.
+    pub expansion: Vec<f64>,
+}
+
+/// F of one element (2 n_modes × n_modes), N/K.
+fn coupling_matrix(
+    body: &ElasticBody,
+    element: usize,
+    material: &Material,
+    alpha: f64,
+) -> Mat<f64> {
+    let mesh = &body.mesh;
+    let basis = &body.basis;
+    let nq = super::quadrature_points(mesh, element, basis.p);
+    let rule = gauss_legendre(nq);
+    let tab = basis.tabulate(&rule.points, &rule.points);
+    let n = basis.n_modes();
+    let s = material.thermal_stress_per_kelvin(body.analysis, alpha);
+    let t = body.analysis.thickness();
+    let mut f = Mat::<f64>::zeros(2 * n, n);
+    for iy in 0..nq {
+        for ix in 0..nq {
+            let q = iy * nq + ix;
+            let (j, det) = mesh.jacobian(element, rule.points[ix], rule.points[iy]);
+            let w = rule.weights[ix] * rule.weights[iy] * det * t;
+            let (dxi_dx, dxi_dz) = (j[1][1] / det, -j[0][1] / det);
+            let (deta_dx, deta_dz) = (-j[1][0] / det, j[0][0] / det);
+            for a in 0..n {
+                let idx = a * tab.n_points + q;
+                let (nxi, neta) = (tab.d_xi[idx], tab.d_eta[idx]);
+                let dx = (nxi * dxi_dx + neta * deta_dx) * s[0] * w;
+                let dz = (nxi * dxi_dz + neta * deta_dz) * s[1] * w;
+                for b in 0..n {
+                    let nb = tab.values[b * tab.n_points + q];
+                    f[(2 * a, b)] += dx * nb;
+                    f[(2 * a + 1, b)] += dz * nb;
+                }
+            }
+        }
+    }
+    f
+}
+
+impl ElasticBody {
+    /// The thermal load operators of this body for the expansion coefficients `expansion`
+    /// (1/K, one per material). Recomputes each element type's stiffness once (its internal
+    /// block is needed to condense the load).
+    pub fn thermal_loads(&self, expansion: &[f64]) -> Result<ThermalLoads, super::ElasticityError> {
+        let nb = 2 * self.basis.n_boundary();
+        let mut types: Vec<Option<(Mat<f64>, Mat<f64>)>> = vec![None; self.types.len()];
+        for element in 0..self.mesh.elements.len() {
+            let ty = self.element_type[element];
+            if types[ty].is_some() {
+                continue;
+            }
+            let m = self.mesh.elements[element].material;
+            let material = &self.materials[m];
+            let f = coupling_matrix(self, element, material, expansion[m]);
+            let n = f.nrows();
+            let ni = n - nb;
+            let condensed_recovery = &self.types[ty].recovery;
+            let (load, internal) = if ni == 0 {
+                (f.clone(), Mat::zeros(0, f.ncols()))
+            } else {
+                let nq = super::quadrature_points(&self.mesh, element, self.basis.p);
+                let k = element_stiffness(
+                    &self.mesh,
+                    element,
+                    &self.basis,
+                    material,
+                    self.analysis,
+                    nq,
+                );
+                let kii = k.submatrix(nb, nb, ni, ni);
+                let fi = f.submatrix(nb, 0, ni, f.ncols());
+                let internal = kii
+                    .llt(Side::Lower)
+                    .map_err(|_| super::ElasticityError::Internal { element })?
+                    .solve(fi);
+                let load = f.submatrix(0, 0, nb, f.ncols()) - condensed_recovery.transpose() * fi;
+                (load, internal)
+            };
+            types[ty] = Some((load, internal));
+        }
+        Ok(ThermalLoads {
+            // Every type has an element, so every entry was filled.
+            types: types.into_iter().flatten().collect(),
+            expansion: expansion.to_vec(),
+        })
+    }
+
+    /// The thermal stress s ΔT (MPa) of a rise `rise` (K) in `element`: what
+    /// [`ElasticBody::values_at_reference`]'s D ε must be reduced by where the body is heated.
+    pub fn thermal_stress(&self, loads: &ThermalLoads, element: usize, rise: f64) -> [f64; 3] {
+        let m = self.mesh.elements[element].material;
+        let s = self.materials[m].thermal_stress_per_kelvin(self.analysis, loads.expansion[m]);
+        [s[0] * rise, s[1] * rise, 0.0]
+    }
+
+    /// The condensed global load (N per global boundary dof) of a temperature rise whose
+    /// coefficients on element e's modes (signs applied, K) are `rise(e)`.
+    pub fn thermal_load_vector(
+        &self,
+        loads: &ThermalLoads,
+        rise: impl Fn(usize) -> Vec<f64>,
+    ) -> Vec<f64> {
+        let mut load = vec![0.0; self.dofs.n_dofs()];
+        for element in 0..self.mesh.elements.len() {
+            let dt = rise(element);
+            let ed = self.dofs.element_dofs(&self.mesh, element);
+            let f = &loads.types[self.element_type[element]].0;
+            for (r, (&g, &s)) in ed.global.iter().zip(&ed.sign).enumerate() {
+                let v: f64 = (0..f.ncols()).map(|b| f[(r, b)] * dt[b]).sum();
+                load[g] += s * v;
+            }
+        }
+        load
+    }
+
+    /// The displacement of `boundary` (the solution of a load that included the thermal
+    /// load of `rise`) with its internal modes recovered: u_i = K_ii⁻¹ F_i ΔT − R u_b.
+    pub fn recover_thermal(
+        &self,
+        boundary: Vec<f64>,
+        loads: &ThermalLoads,
+        rise: impl Fn(usize) -> Vec<f64>,
+    ) -> super::Displacement {
+        let mut u = self.recover(boundary);
+        let nb = 2 * self.basis.n_boundary();
+        for (element, local) in u.local.iter_mut().enumerate() {
+            let z = &loads.types[self.element_type[element]].1;
+            if z.nrows() == 0 {
+                continue;
+            }
+            let dt = rise(element);
+            for i in 0..z.nrows() {
+                local[nb + i] += (0..z.ncols()).map(|b| z[(i, b)] * dt[b]).sum::<f64>();
+            }
+        }
+        u
+    }
+
+    /// The per-element type index (elements of equal geometry, material and quadrature share
+    /// one): a caller that builds per-element operators can reuse its work per type.
+    pub fn element_type(&self, element: usize) -> usize {
+        self.element_type[element]
+    }
+
+    /// The condensed boundary load per unit temperature mode of `element` (N/K, rows in the
+    /// order of [`crate::dofs::DofMap::element_dofs`] without signs, columns the
+    /// temperature's modes without signs).
+    pub fn thermal_load_matrix<'a>(&self, loads: &'a ThermalLoads, element: usize) -> &'a Mat<f64> {
+        &loads.types[self.element_type[element]].0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::basis::{ModeKind, Space};
+    use crate::elasticity::{Constraints, Discretisation, ElasticBody};
+    use crate::geometry::{Block, EdgeShape};
+    use crate::material::{Analysis, Material};
+    use crate::mesh::{Mesh, MeshBlock};
+
+    const STEEL: Material = Material {
+        young: 2.0e5,
+        poisson: 0.3,
+    };
+    const ALPHA: f64 = 1.2e-5;
+
+    /// A 60 × 8 mm strip, 6 × 2 elements (the middle line z = 4 a mesh line), held at
+    /// (0, 4) in x and z and at (60, 4) in z: free of any stress a compatible strain causes.
+    fn strip(analysis: Analysis, p: usize) -> ElasticBody {
+        let block = MeshBlock {
+            block: Block::new(
+                [[0.0, 0.0], [60.0, 0.0], [60.0, 8.0], [0.0, 8.0]],
+                [
+                    EdgeShape::Straight,
+                    EdgeShape::Straight,
+                    EdgeShape::Straight,
+                    EdgeShape::Straight,
+                ],
+            )
+            .unwrap(),
+            u_lines: (0..=6).map(|i| i as f64 / 6.0).collect(),
+            v_lines: vec![0.0, 0.5, 1.0],
+            material: 0,
+            edge_names: [None, None, None, None],
+        };
+        let mesh = Mesh::build(vec![block]).unwrap();
+        let dofs = crate::dofs::DofMap::new(&mesh, p);
+        let left = mesh.vertex_at([0.0, 4.0]).unwrap();
+        let right = mesh.vertex_at([60.0, 4.0]).unwrap();
+        let fixed = vec![
+            dofs.vertex_dof(left, 0),
+            dofs.vertex_dof(left, 1),
+            dofs.vertex_dof(right, 1),
+        ];
+        ElasticBody::new(
+            "strip",
+            mesh,
+            vec![STEEL],
+            analysis,
+            Discretisation {
+                p,
+                space: Space::TensorProduct,
+            },
+            &Constraints { fixed },
+        )
+        .unwrap()
+    }
+
+    /// The rise's coefficients on each element's modes for a field linear in x and z: the
+    /// vertex values (a linear field is linear along every straight edge: no edge modes).
+    fn linear_rise<'a>(
+        body: &'a ElasticBody,
+        field: impl Fn([f64; 2]) -> f64 + 'a,
+    ) -> impl Fn(usize) -> Vec<f64> + 'a {
+        move |element| {
+            let vertices = body.mesh.elements[element].vertices;
+            body.basis
+                .modes
+                .iter()
+                .map(|m| match m.kind {
+                    ModeKind::Vertex(v) => field(body.mesh.vertices[vertices[v]]),
+                    _ => 0.0,
+                })
+                .collect()
+        }
+    }
+
+    fn solve(
+        body: &ElasticBody,
+        field: impl Fn([f64; 2]) -> f64 + Copy,
+    ) -> crate::elasticity::Displacement {
+        let loads = body.thermal_loads(&[ALPHA]).unwrap();
+        let load = body.thermal_load_vector(&loads, linear_rise(body, field));
+        let mut rhs = faer::Mat::from_fn(load.len(), 1, |i, _| load[i]);
+        body.solve_in_place(&mut rhs).unwrap();
+        let boundary = (0..load.len()).map(|i| rhs[(i, 0)]).collect();
+        body.recover_thermal(boundary, &loads, linear_rise(body, field))
+    }
+
+    #[test]
+    fn uniform_rise_expands_freely() {
+        // Closed form (c): a free body heated uniformly by ΔT expands by α′ΔT in every
+        // direction, u = α′ΔT (x − x₀), with α′ = α (plane stress) or (1 + ν) α (plane
+        // strain), and is free of stress. The field is linear: exact in the space, so only
+        // round-off (1e-10 of the displacement, the issue's bound) remains.
+        let rise = 50.0;
+        for (analysis, free) in [
+            (Analysis::PlaneStress { thickness: 10.0 }, ALPHA),
+            (Analysis::PlaneStrain { thickness: 10.0 }, 1.3 * ALPHA),
+        ] {
+            for p in [1, 3, 8] {
+                let body = strip(analysis, p);
+                let u = solve(&body, |_| rise);
+                let loads = body.thermal_loads(&[ALPHA]).unwrap();
+                for x in [[60.0, 4.0], [30.0, 0.0], [45.0, 8.0], [7.0, 1.0]] {
+                    let v = body.values_at(&u, x).unwrap();
+                    let exact = [free * rise * x[0], free * rise * (x[1] - 4.0)];
+                    let scale = free * rise * 60.0;
+                    for c in 0..2 {
+                        assert!(
+                            (v.displacement[c] - exact[c]).abs() < 1e-10 * scale,
+                            "{analysis:?} p = {p} {x:?}: {:?} vs {exact:?}",
+                            v.displacement
+                        );
+                    }
+                    let (element, ..) = body.mesh.locate(x).unwrap();
+                    let s = body.thermal_stress(&loads, element, rise);
+                    for c in 0..3 {
+                        // σ = D ε − s ΔT vanishes: measured against s ΔT itself.
+                        let sigma = v.stress[c] - s[c];
+                        assert!(sigma.abs() < 1e-9 * s[0].abs(), "{sigma}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn gradient_through_the_thickness_bends_a_free_strip() {
+        // Closed form (d): a free strip whose temperature rises linearly through its
+        // thickness, ΔT = b (z − 4), bends stress-free to the curvature κ = α′ b (its
+        // thermal strain is compatible): u_z(x, 4) = α′ b x (60 − x)/2 between the supports at
+        // the ends of its middle line. u_z is quadratic: exact from p = 2, so round-off only
+        // (1e-9 of the sag; the issue asks 0.1 %).
+        let b = 5.0; // K/mm: 40 K between the faces
+        for (analysis, free) in [
+            (Analysis::PlaneStress { thickness: 10.0 }, ALPHA),
+            (Analysis::PlaneStrain { thickness: 10.0 }, 1.3 * ALPHA),
+        ] {
+            for p in [2, 6] {
+                let body = strip(analysis, p);
+                let u = solve(&body, |x| b * (x[1] - 4.0));
+                let kappa = free * b;
+                let sag = kappa * 30.0 * 30.0 / 2.0;
+                for x in [7.5, 30.0, 41.0] {
+                    let uz = body.values_at(&u, [x, 4.0]).unwrap().displacement[1];
+                    let exact = kappa * x * (60.0 - x) / 2.0;
+                    assert!(
+                        (uz - exact).abs() < 1e-9 * sag,
+                        "{analysis:?} p = {p} x = {x}: {uz} vs {exact}"
+                    );
+                }
+            }
+        }
+    }
+}
