@@ -1,6 +1,7 @@
 //! Problem input: the file schema, validation and model building, `--set` overrides, engineering wear units, and the built-in examples.
 
 pub mod examples;
+pub mod heat;
 pub mod overrides;
 pub mod problem;
 pub mod schema;

@@ -18,6 +18,7 @@ pub mod law;
 mod outcome;
 mod schemes;
 mod step;
+pub mod thermal;
 mod workspace;
 mod zero_shift;
 pub use adaptive::{AdaptiveMethod, AdaptiveSpec};
@@ -130,6 +131,10 @@ pub struct Snapshot {
     pub direction: &'static str,
     /// Pressure at the end of the step, MPa.
     pub pressure: Vec<f64>,
+    /// With heat: the modal coordinates of the temperature at the step's end (not
+    /// serialised: the ParaView writer makes fields of them).
+    #[serde(skip)]
+    pub thermal_state: Option<Vec<f64>>,
     /// Shape at the end of the step, mm: the initial gap plus the wear so far (shifted to
     /// zero at `shape_zero_at` after each full cycle). After a first half cycle it is the
     /// cycle's start shape plus k times that half period's wear, whatever the scheme.
@@ -137,7 +142,8 @@ pub struct Snapshot {
     /// The gap `pressure` is the contact solution of, mm: `shape` after a second half cycle;
     /// after a first half cycle the step's own shape plus the look-ahead (the wear the
     /// cycle's second half is about to add; for BDF2 also its known part). Not serialised:
-    /// the ParaView writer re-solves from it so that its fields belong to `pressure`.
+    /// the ParaView writer re-solves from it so that its fields belong to `pressure`. With
+    /// heat it includes the thermal gap the step was solved with.
     #[serde(skip)]
     pub contact_shape: Vec<f64>,
 }
@@ -165,6 +171,12 @@ pub struct StepRecord {
     pub probes: Vec<f64>,
     /// Largest δw = Δw − min Δw over the cycle ending here (paper eq. 40), mm; 0 after '+' steps.
     pub delta_w: f64,
+    /// With heat: the temperature at each probe at the step's end, °C, in probe order.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub temperatures: Vec<f64>,
+    /// With heat: the largest temperature of body 1 and of body 2 at the step's end, °C.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_temperature: Option<[f64; 2]>,
 }
 
 /// Result of a wear run.
@@ -203,6 +215,9 @@ pub struct WearHistory {
     /// How far the last full cycle is from the steady state; None until a cycle is complete
     /// (then `p_plus`, `p_minus` are not results either).
     pub steady_distance: Option<SteadyDistance>,
+    /// With heat: the temperatures and thermal gaps at the end.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thermal: Option<thermal::ThermalHistory>,
 }
 
 impl WearHistory {
@@ -278,6 +293,8 @@ pub struct WearIntegrator {
     law_bodies: Vec<usize>,
     /// Sliding direction of the first (odd) steps; default '+'.
     pub first_direction: Direction,
+    /// The heat problem, for a problem with `[heat]` (see [`thermal`]).
+    pub heat: Option<std::sync::Arc<thermal::ThermalModel>>,
 }
 
 impl WearIntegrator {
@@ -451,6 +468,7 @@ impl WearIntegrator {
             laws,
             law_bodies,
             first_direction: Direction::Plus,
+            heat: None,
         };
         for (name, law) in [("body1", spec.body1), ("body2", spec.body2)] {
             if let Some(l) = law {

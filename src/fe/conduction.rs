@@ -499,16 +499,28 @@ impl ConductionBody {
         load
     }
 
-    /// Heat stored in `field` relative to the uniform temperature `reference` (mJ):
-    /// t ∫ ρc (T − T_ref) dA.
-    pub fn stored_heat(&self, field: &[f64], reference: f64) -> f64 {
+    /// The heat (mJ) stored per kelvin of each full unknown: C 1, so that the heat stored in
+    /// a field T relative to a uniform T_ref is (C 1)·(T − T_ref 1).
+    pub fn heat_content_weights(&self) -> Vec<f64> {
         let ones = self.uniform(1.0);
         let mut c_ones = vec![0.0; self.n_full()];
         add_product(&self.full_capacity, &ones, &mut c_ones);
         c_ones
+    }
+
+    /// The element's modes as (full unknown, sign) pairs, in the basis's mode order.
+    pub fn element_unknowns(&self, element: usize) -> Vec<(usize, f64)> {
+        element_unknowns(&self.mesh, &self.dofs, &self.basis, element)
+    }
+
+    /// Heat stored in `field` relative to the uniform temperature `reference` (mJ):
+    /// t ∫ ρc (T − T_ref) dA.
+    pub fn stored_heat(&self, field: &[f64], reference: f64) -> f64 {
+        let uniform = self.uniform(reference);
+        self.heat_content_weights()
             .iter()
-            .zip(field)
-            .map(|(c, t)| c * (t - reference))
+            .zip(field.iter().zip(&uniform))
+            .map(|(c, (t, r))| c * (t - r))
             .sum()
     }
 

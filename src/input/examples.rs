@@ -9,6 +9,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
     ("punch-b20", include_str!("../../examples/punch-b20.toml")),
     ("punch-b40", include_str!("../../examples/punch-b40.toml")),
     (
+        "punch-b40-heat",
+        include_str!("../../examples/punch-b40-heat.toml"),
+    ),
+    (
         "punch-b40-b1.2",
         include_str!("../../examples/punch-b40-b1.2.toml"),
     ),

@@ -206,6 +206,7 @@ impl Problem {
             problem.check_traction_windows(b, built.mesh(b))?;
         }
         problem.meshes = Some(built);
+        problem.heat_settings()?;
         for (name, probe) in &problem.spec.probes {
             problem.body_index(&probe.body).map_err(|_| {
                 problem.error(

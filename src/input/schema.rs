@@ -36,6 +36,26 @@ pub struct MaterialSpec {
     pub young: f64,
     /// Poisson's ratio (−1 < ν < 0.5).
     pub poisson: f64,
+    /// Thermal conductivity k, W/(m·K) (problems with `[heat]`).
+    pub conductivity: Option<f64>,
+    /// Specific heat c, J/(kg·K) (problems with `[heat]`).
+    pub specific_heat: Option<f64>,
+    /// Density ρ, kg/m³ (problems with `[heat]`).
+    pub density: Option<f64>,
+    /// Linear thermal expansion coefficient α, 1/K (problems with `[heat]`).
+    pub expansion: Option<f64>,
+}
+
+impl MaterialSpec {
+    /// The thermal keys, together.
+    pub fn thermal(&self) -> crate::heat_input::ThermalProperties {
+        crate::heat_input::ThermalProperties {
+            conductivity: self.conductivity,
+            specific_heat: self.specific_heat,
+            density: self.density,
+            expansion: self.expansion,
+        }
+    }
 }
 
 /// One number, or two (start and end of a linear variation).
@@ -222,6 +242,8 @@ pub struct ProblemSpec {
     pub plate: Option<crate::contact::PlateSpec>,
     /// Wear settings (see [`crate::wear`]).
     pub wear: Option<crate::wear::WearSpec>,
+    /// Frictional heat, conduction and thermal distortion (see [`crate::heat_input`]).
+    pub heat: Option<crate::heat_input::HeatSpec>,
     /// Output settings.
     pub output: Option<OutputSpec>,
 }

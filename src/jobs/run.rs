@@ -105,9 +105,11 @@ pub fn wear_until(
     integrator.first_direction = direction(problem)?;
     check_shape_zero_plate(problem)?;
     let start = Instant::now();
-    let (contact, _, _) = CondensedContact::build(problem)?;
+    let (contact, body1, body2) = CondensedContact::build(problem)?;
     check_contact_probes(problem, &contact)?;
     check_shape_zero(problem, &contact)?;
+    integrator.heat =
+        super::heat::thermal_model(problem, &contact, [&body1, &body2])?.map(std::sync::Arc::new);
     let mut solver = ContactSolver::new(&contact, method(problem)?);
     let setup_seconds = start.elapsed().as_secs_f64();
     let probes = contact_probes(problem, &contact);

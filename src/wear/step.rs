@@ -78,7 +78,12 @@ impl WearIntegrator {
             failed_solves: 0,
             stopped: None,
             steady_distance: None,
+            thermal: None,
         };
+        let mut heat = self.heat.as_deref().map(super::thermal::HeatRun::new);
+        if let Some(h) = &heat {
+            ws.thermal.clone_from(&h.gap);
+        }
         let monotonic = self.is_monotonic();
         let zero_at = self
             .spec
@@ -188,11 +193,23 @@ impl WearIntegrator {
             for ((c, g), a) in contact_shape.iter_mut().zip(&shape).zip(&ws.ahead) {
                 *c = g + a;
             }
+            for (c, t) in contact_shape.iter_mut().zip(&ws.thermal) {
+                *c += t;
+            }
             let (pressure, increment) = (&ws.solution.pressure, &ws.increment);
             let dissipation: f64 = (0..n)
                 .map(|i| pressure[i] * increment[i] * points.weight[i])
                 .sum::<f64>()
                 * contact.thickness;
+            let (temperatures, max_temperature) = match heat.as_mut() {
+                Some(h) => {
+                    ws.solved_thermal.clone_from(&ws.thermal);
+                    let (t, m) = h.after_step(&ws.solution.pressure, direction, k);
+                    ws.thermal.clone_from(&h.gap);
+                    (t, Some(m))
+                }
+                None => (Vec::new(), None),
+            };
             if direction == Direction::Plus || monotonic {
                 hist.p_plus.copy_from_slice(pressure);
             } else {
@@ -211,6 +228,13 @@ impl WearIntegrator {
                 let minus: &[f64] = if monotonic { &[] } else { &hist.p_minus };
                 let distance =
                     steady_distance(&cycle_wear, &hist.p_plus, minus, &rigid, m, &points.weight);
+                // With heat, a cycle is steady only if the thermal gap has stopped moving too:
+                // its change over the cycle against the cycle's wear (k half periods of it).
+                let thermal_unsettled = heat.as_mut().map_or(0.0, |h| {
+                    let largest = cycle_wear.iter().fold(0.0f64, |a, w| a.max(w.abs()));
+                    h.end_cycle() / (k as f64 * largest).max(f64::MIN_POSITIVE)
+                });
+                let unsettled = distance.unsettled().max(thermal_unsettled);
                 hist.steady_distance = Some(distance);
                 delta_w = distance.delta_w;
                 if let Some(weights) = &zero_at {
@@ -223,14 +247,12 @@ impl WearIntegrator {
                         d.fine_cycles = 0;
                         let (local, change, peak) = d.compare(&hist.p_plus, minus);
                         d.extrapolate = c.accepts(local, peak);
-                        steady_now =
-                            step > 4 && c.end_macro_step(local, change, peak, distance.unsettled());
+                        steady_now = step > 4 && c.end_macro_step(local, change, peak, unsettled);
                     }
                 }
                 if let (Some(c), Some(b)) = (controller.as_mut(), bdf2.as_mut()) {
                     let (local, change, peak) = b.end_cycle(k, &hist.p_plus, minus);
-                    steady_now =
-                        step > 4 && c.end_macro_step(local, change, peak, distance.unsettled());
+                    steady_now = step > 4 && c.end_macro_step(local, change, peak, unsettled);
                 }
             }
             match bdf2.as_ref() {
@@ -253,6 +275,8 @@ impl WearIntegrator {
                 dissipation,
                 probes: probe_points.iter().map(|&i| pressure[i]).collect(),
                 delta_w,
+                temperatures,
+                max_temperature,
             };
             let control = on_step(&record);
             hist.steps.push(record);
@@ -262,6 +286,7 @@ impl WearIntegrator {
                     half_period: half_periods,
                     direction: direction.symbol(),
                     pressure: pressure.clone(),
+                    thermal_state: heat.as_ref().map(|h| h.state.a.clone()),
                     shape: written.clone(),
                     contact_shape: contact_shape.clone(),
                 });
@@ -277,6 +302,9 @@ impl WearIntegrator {
         }
         hist.shape = written;
         hist.contact_shape = contact_shape;
+        if let Some(h) = &heat {
+            hist.thermal = Some(h.finish(ws.solved_thermal.clone()));
+        }
         for (depth, w) in hist.worn_depth.iter_mut().zip(&worn) {
             *depth = w.iter().cloned().fold(0.0, f64::max);
         }
@@ -345,6 +373,31 @@ impl WearIntegrator {
     /// the wear of one half period and in `ws.solution` the contact solution it was
     /// computed from.
     fn step(
+        &self,
+        solver: &mut ContactSolver,
+        shape: &mut [f64],
+        direction: Direction,
+        k: f64,
+        ws: &mut Workspace,
+        count: &mut SolveCount,
+    ) -> StepOutcome {
+        if ws.thermal.is_empty() {
+            return self.scheme_step(solver, shape, direction, k, ws, count);
+        }
+        // The thermal gap is held through the step (operator split, paper §4): the step's
+        // contact problems see it as part of the shape, and its wear is added on top.
+        for (g, t) in shape.iter_mut().zip(&ws.thermal) {
+            *g += t;
+        }
+        let outcome = self.scheme_step(solver, shape, direction, k, ws, count);
+        for (g, t) in shape.iter_mut().zip(&ws.thermal) {
+            *g -= t;
+        }
+        outcome
+    }
+
+    /// [`WearIntegrator::step`] without the thermal gap.
+    fn scheme_step(
         &self,
         solver: &mut ContactSolver,
         shape: &mut [f64],

@@ -71,6 +71,10 @@ pub(super) struct Workspace {
     pub residual: Vec<f64>,
     /// The shape after the last step that was kept.
     pub last_shape: Vec<f64>,
+    /// With heat: the thermal gap the next step is solved with (mm), and the one the last
+    /// kept step was solved with; empty without heat.
+    pub thermal: Vec<f64>,
+    pub solved_thermal: Vec<f64>,
     pub solution: ContactSolution,
 }
 
@@ -96,6 +100,8 @@ impl Workspace {
             new_increment: vec![0.0; n],
             residual: vec![0.0; n],
             last_shape: vec![0.0; n],
+            thermal: Vec::new(),
+            solved_thermal: Vec::new(),
             solution: ContactSolution::default(),
         }
     }

@@ -38,13 +38,15 @@
 //! ([`super::transient`]) on the shipped and on refined meshes.
 
 use super::add_product;
-use super::transient::{combine, SpdFactor};
+use super::transient::{combine, SpdFactor, SpdSymbolic};
 use faer::sparse::SparseColMat;
 use faer::{Mat, MatRef, Side};
 
-/// Relative size of a Gram eigenvalue below which a direction of the basis is dropped as
-/// dependent on the others.
-const DROP: f64 = 1e-12;
+/// A new direction is kept when its squared C-norm after projection on the basis exceeds
+/// DROP times its own (a residual of 1e-5 of its size): the blocks of nearby shifts are
+/// nearly parallel, and what is left of them beyond that changes no output by more than the
+/// reduction's own error (docs/convergence.md).
+const DROP: f64 = 1e-10;
 
 /// The modes of the reduced heat problem.
 #[derive(Clone, Debug)]
@@ -69,43 +71,162 @@ pub enum ReductionError {
     Eigen,
 }
 
-/// Columns of A x for every column x of `v`.
-fn sparse_times(a: &SparseColMat<usize, f64>, v: MatRef<'_, f64>) -> Mat<f64> {
-    let mut out = Mat::<f64>::zeros(v.nrows(), v.ncols());
-    let mut column = vec![0.0; v.nrows()];
-    let mut x = vec![0.0; v.nrows()];
-    for j in 0..v.ncols() {
-        column.iter_mut().for_each(|c| *c = 0.0);
-        for (i, xi) in x.iter_mut().enumerate() {
-            *xi = v[(i, j)];
-        }
-        add_product(a, &x, &mut column);
-        for (i, &c) in column.iter().enumerate() {
-            out[(i, j)] = c;
+/// Vᵀ A (r × N) for a symmetric sparse A (N × N, both triangles stored) and V given as its
+/// transpose `vt` (r × N): column j of the result is Σ_k A_kj vt[:, k], a sum of contiguous
+/// columns, so the product runs at the speed of an axpy instead of scattering row by row.
+/// Since A is symmetric this is also (A V)ᵀ.
+pub fn transpose_times(a: &SparseColMat<usize, f64>, vt: MatRef<'_, f64>) -> Mat<f64> {
+    let mut out = Mat::<f64>::zeros(vt.nrows(), a.ncols());
+    let col_ptr = a.symbolic().col_ptr();
+    let row_idx = a.symbolic().row_idx();
+    let values = a.val();
+    let vt = vt.to_owned();
+    let r = vt.nrows();
+    for j in 0..a.ncols() {
+        let range = col_ptr[j]..col_ptr[j + 1];
+        let column = out
+            .col_mut(j)
+            .try_as_col_major_mut()
+            .expect("an owned matrix's columns are contiguous")
+            .as_slice_mut();
+        for (&k, &v) in row_idx[range.clone()].iter().zip(&values[range]) {
+            let source = vt
+                .col(k)
+                .try_as_col_major()
+                .expect("an owned matrix's columns are contiguous")
+                .as_slice();
+            for (o, s) in column[..r].iter_mut().zip(source) {
+                *o += v * s;
+            }
         }
     }
     out
 }
 
-/// Orthonormalise the columns of `v` in the inner product of `c`, dropping dependent ones.
-fn orthonormalise(c: &SparseColMat<usize, f64>, v: Mat<f64>) -> Result<Mat<f64>, ReductionError> {
-    let mut v = v;
-    for _ in 0..2 {
-        let cv = sparse_times(c, v.as_ref());
-        let gram = v.transpose() * &cv;
+/// A basis kept C-orthonormal as blocks are added, with C times it (so that a new block's
+/// projection costs dense products only).
+struct Basis {
+    v: Mat<f64>,
+    cv: Mat<f64>,
+}
+
+impl Basis {
+    /// Add the directions of `w` (N × b) that the basis lacks: block classical Gram–Schmidt
+    /// in the C inner product, twice (one pass leaves the new directions orthogonal only to
+    /// the square root of round-off when they are nearly dependent), then the block's own
+    /// Gram matrix is diagonalised and its directions whose norm left after projection is
+    /// below √DROP of what they had are dropped.
+    fn add(
+        &mut self,
+        capacity: &SparseColMat<usize, f64>,
+        w: Mat<f64>,
+    ) -> Result<(), ReductionError> {
+        let mut w = w;
+        let wt = w.transpose().to_owned();
+        let mut cw = transpose_times(capacity, wt.as_ref())
+            .transpose()
+            .to_owned();
+        // Unit C-norm columns, so that the drop is relative to each direction's own size.
+        for c in 0..w.ncols() {
+            let norm: f64 = (0..w.nrows())
+                .map(|i| w[(i, c)] * cw[(i, c)])
+                .sum::<f64>()
+                .sqrt();
+            let inverse = if norm > 0.0 && norm.is_finite() {
+                1.0 / norm
+            } else {
+                0.0
+            };
+            for i in 0..w.nrows() {
+                w[(i, c)] *= inverse;
+                cw[(i, c)] *= inverse;
+            }
+        }
+        if self.v.ncols() > 0 {
+            for _ in 0..2 {
+                let h = self.cv.transpose() * &w;
+                w -= &self.v * &h;
+                cw -= &self.cv * &h;
+            }
+        }
+        let gram = w.transpose() * &cw;
         let eigen = gram
             .self_adjoint_eigen(Side::Lower)
             .map_err(|_| ReductionError::Eigen)?;
         let s = eigen.S().column_vector();
-        let largest = (0..s.nrows()).map(|i| s[i]).fold(0.0f64, f64::max);
-        let kept: Vec<usize> = (0..s.nrows()).filter(|&i| s[i] > DROP * largest).collect();
+        let kept: Vec<usize> = (0..s.nrows()).filter(|&i| s[i] > DROP).collect();
+        if kept.is_empty() {
+            return Ok(());
+        }
         let u = eigen.U();
-        let scaled = Mat::from_fn(u.nrows(), kept.len(), |r, j| {
+        let scale = Mat::from_fn(u.nrows(), kept.len(), |r, j| {
             u[(r, kept[j])] / s[kept[j]].sqrt()
         });
-        v = &v * &scaled;
+        let (w, cw) = (&w * &scale, &cw * &scale);
+        let r = self.v.ncols();
+        let mut v = Mat::<f64>::zeros(w.nrows(), r + w.ncols());
+        let mut cv = Mat::<f64>::zeros(w.nrows(), r + w.ncols());
+        v.subcols_mut(0, r).copy_from(&self.v);
+        v.subcols_mut(r, w.ncols()).copy_from(&w);
+        cv.subcols_mut(0, r).copy_from(&self.cv);
+        cv.subcols_mut(r, w.ncols()).copy_from(&cw);
+        self.v = v;
+        self.cv = cv;
+        Ok(())
     }
-    Ok(v)
+}
+
+/// The rational Krylov basis, C-orthonormal: `extra`, then (K + σC)⁻¹ B for each shift and
+/// K⁻¹CK⁻¹B at σ = 0. K + σC has one pattern for every σ (the union of K's and C's), so the
+/// symbolic factorisation is made once.
+fn krylov_basis(
+    conductivity: &SparseColMat<usize, f64>,
+    capacity: &SparseColMat<usize, f64>,
+    inputs: MatRef<'_, f64>,
+    shifts: &[f64],
+    extra: &[Vec<f64>],
+) -> Result<Mat<f64>, ReductionError> {
+    let n = conductivity.nrows();
+    // Both on the union pattern (explicit zeros kept), so that K + σC is a sum of values.
+    let k_union = combine(1.0, conductivity, 0.0, capacity);
+    let c_union = combine(0.0, conductivity, 1.0, capacity);
+    let symbolic = SpdSymbolic::new(&k_union).ok_or(ReductionError::NotDefinite { shift: 0.0 })?;
+    let mut basis = Basis {
+        v: Mat::zeros(n, 0),
+        cv: Mat::zeros(n, 0),
+    };
+    basis.add(capacity, Mat::from_fn(n, extra.len(), |i, j| extra[j][i]))?;
+    for &shift in shifts {
+        let values: Vec<f64> = k_union
+            .val()
+            .iter()
+            .zip(c_union.val())
+            .map(|(k, c)| k + shift * c)
+            .collect();
+        let matrix = SparseColMat::new(
+            k_union.symbolic().to_owned().expect("a valid pattern"),
+            values,
+        );
+        let factor = SpdFactor::with_symbolic(&symbolic, &matrix)
+            .ok_or(ReductionError::NotDefinite { shift })?;
+        let mut w = inputs.to_owned();
+        factor.solve_in_place(&mut w);
+        if !w.col_iter().all(|c| c.iter().all(|x| x.is_finite())) {
+            return Err(ReductionError::NotDefinite { shift });
+        }
+        if shift == 0.0 {
+            let wt = w.transpose().to_owned();
+            let mut second = transpose_times(capacity, wt.as_ref())
+                .transpose()
+                .to_owned();
+            factor.solve_in_place(&mut second);
+            basis.add(capacity, w)?;
+            basis.add(capacity, second)?;
+        } else {
+            basis.add(capacity, w)?;
+        }
+    }
+    Ok(basis.v)
 }
 
 impl ReducedModel {
@@ -119,54 +240,10 @@ impl ReducedModel {
         shifts: &[f64],
         extra: &[Vec<f64>],
     ) -> Result<ReducedModel, ReductionError> {
-        let n = conductivity.nrows();
-        let mut blocks: Vec<Mat<f64>> = Vec::new();
-        for &shift in shifts {
-            let matrix = if shift == 0.0 {
-                conductivity.clone()
-            } else {
-                combine(1.0, conductivity, shift, capacity)
-            };
-            let factor = SpdFactor::new(&matrix).ok_or(ReductionError::NotDefinite { shift })?;
-            let mut w = inputs.to_owned();
-            factor.solve_in_place(&mut w);
-            if shift == 0.0 {
-                let mut second = sparse_times(capacity, w.as_ref());
-                factor.solve_in_place(&mut second);
-                blocks.push(second);
-            }
-            blocks.push(w);
-        }
-        let columns: usize = blocks.iter().map(|b| b.ncols()).sum::<usize>() + extra.len();
-        let mut v = Mat::<f64>::zeros(n, columns);
-        let mut j = 0;
-        for block in &blocks {
-            for c in 0..block.ncols() {
-                for i in 0..n {
-                    v[(i, j)] = block[(i, c)];
-                }
-                j += 1;
-            }
-        }
-        for e in extra {
-            for i in 0..n {
-                v[(i, j)] = e[i];
-            }
-            j += 1;
-        }
-        // Unit columns first: the blocks of large shifts are orders of magnitude smaller.
-        let cv = sparse_times(capacity, v.as_ref());
-        for c in 0..columns {
-            let norm: f64 = (0..n).map(|i| v[(i, c)] * cv[(i, c)]).sum::<f64>().sqrt();
-            if norm > 0.0 {
-                for i in 0..n {
-                    v[(i, c)] /= norm;
-                }
-            }
-        }
-        let v = orthonormalise(capacity, v)?;
-        let kv = sparse_times(conductivity, v.as_ref());
-        let reduced = v.transpose() * &kv;
+        // V is C-orthonormal; the eigenvectors Q of VᵀKV make Φ = V Q K-orthogonal too.
+        let v = krylov_basis(conductivity, capacity, inputs, shifts, extra)?;
+        let vt = v.transpose().to_owned();
+        let reduced = transpose_times(conductivity, vt.as_ref()) * &v;
         let eigen = reduced
             .self_adjoint_eigen(Side::Lower)
             .map_err(|_| ReductionError::Eigen)?;

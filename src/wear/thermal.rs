@@ -1,0 +1,416 @@
+//! Frictional heat and thermal distortion in the wear integration (paper §4): the heat of
+//! each step's pressure warms both bodies, and the normal thermal displacements of the two
+//! contact surfaces enter the gap the way wear does.
+//!
+//! # The scheme (operator split, as the paper's §4)
+//!
+//! Per step n of k half periods in direction d:
+//! 1. the contact is solved on the gap with the wear so far and the thermal gap of the
+//!    temperature T_n at the step's start, g_th(T_n) = u_n⁽²⁾(T_n) − u_n⁽¹⁾(T_n);
+//! 2. the wear increment of that pressure is added (the wear loop's own business);
+//! 3. the heat problem is advanced over the step's k half periods from T_n under that
+//!    pressure's frictional heat, q_i = μ p_i |v(t)| per unit area at each contact point;
+//!    its end temperature T_{n+1} gives the next step's thermal gap.
+//!
+//! A step of k half periods stands for k half periods in which the real process alternates
+//! directions; the heat of a step is therefore k half periods *alternating* between this
+//! step's pressure and the last pressure of the other direction, ending with this step's
+//! direction. For k = 1 (the paper's first steps, and every step of a run without
+//! extrapolation) that is the step's own half period; for k ≫ 1 it gives the temperature the
+//! process reaches, with its periodic ripple, instead of k half periods of one direction's
+//! heat. Within a half period of reciprocating sliding the speed is u₀ω sin ωs, so the flux
+//! is a half sine of amplitude μ p_i u₀ ω; the heat of a half period is μ p_i 2u₀ per unit
+//! area, exactly.
+//!
+//! # The heat problem and its solution
+//!
+//! Both bodies are one heat problem ([`crate::conduction`]'s operators side by side). Under
+//! perfect thermal contact, partner points are tied by an interface conductance h_c w_i t
+//! (T⁽¹⁾_i − T⁽²⁾_i) so large ([`INTERFACE_CONDUCTANCE`]) that the temperatures are equal to
+//! about 10⁻⁶ of the rise: the heat enters at body 1's trace and the tie shares it, so the
+//! share is solved, not assumed. With a given fraction φ, body 1 takes φ of the heat and
+//! body 2 the rest, and no heat crosses otherwise. Heat crosses at every pair of the named
+//! contact edge, in contact or not (the pairs are fixed, as the contact's are).
+//!
+//! The problem is reduced ([`crate::conduction::reduced`]) to the space its inputs excite
+//! (the flux at each contact point, the constant sources, the initial field) and integrated
+//! exactly in time in its modes: no time step, no stability limit, and a step of k half
+//! periods costs what one does. The thermal gap is linear in the temperature: per mode, the
+//! gap of its temperature field through each body's elastic solve with the thermal load
+//! ([`crate::elasticity::ThermalLoads`]), made once in set-up by the adjoint: with X = K⁻¹N
+//! (N the normal traces of the contact points), the gap of a thermal load f is Xᵀf. Body 1 is
+//! clamped at its plate edge as in the contact's condensation, so the plate's rigid motions
+//! still follow from equilibrium.
+
+use crate::complementarity::Direction;
+use crate::conduction::reduced::{constant_gain, decay};
+
+/// Σ_{i<m} e^{−λPi} = (1 − e^{−λPm})/(1 − e^{−λP}), for rate λ (1/s), period P (s): the sum
+/// of m cycles' contributions; m for λ = 0.
+fn geometric_sum(rate: f64, period: f64, m: usize) -> f64 {
+    let one = (-rate * period).exp_m1();
+    if one == 0.0 {
+        m as f64
+    } else {
+        (-rate * period * m as f64).exp_m1() / one
+    }
+}
+use faer::Mat;
+
+mod build;
+pub use build::{CoupledSystem, FullOutput, ThermalBodies, ThermalError, SHIFTS};
+
+/// Interface conductance of perfect thermal contact, relative to the largest conductance of
+/// the bodies at the scale of the contact points' spacing (k/w): h_c = 10⁶ k_max / w_min.
+/// The temperature jump across the interface is then about 10⁻⁶ of the temperature
+/// difference across one spacing, and the matrices stay far from losing their digits (a
+/// ratio of 10⁶ costs six of sixteen).
+pub const INTERFACE_CONDUCTANCE: f64 = 1e6;
+
+/// y = M a + c: an output of the reduced model.
+#[derive(Clone, Debug)]
+pub struct Affine {
+    /// M (outputs × modes).
+    pub matrix: Mat<f64>,
+    /// c (outputs).
+    pub offset: Vec<f64>,
+}
+
+impl Affine {
+    /// The outputs at modal coordinates `a`.
+    pub fn apply(&self, a: &[f64], out: &mut [f64]) {
+        for (i, o) in out.iter_mut().enumerate() {
+            let mut acc = self.offset[i];
+            for (j, aj) in a.iter().enumerate() {
+                acc += self.matrix[(i, j)] * aj;
+            }
+            *o = acc;
+        }
+    }
+
+    /// The outputs at `a`, allocated.
+    pub fn at(&self, a: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; self.offset.len()];
+        self.apply(a, &mut out);
+        out
+    }
+}
+
+/// How the bodies slide, for the time profile of the frictional heat.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Sliding {
+    /// u = −u₀ cos ωt: `amplitude` u₀ (mm), `omega` ω (rad/s).
+    Reciprocating {
+        /// u₀, mm.
+        amplitude: f64,
+        /// ω, rad/s.
+        omega: f64,
+    },
+    /// Constant `speed` (mm/s), a step of `step_time` s.
+    Monotonic {
+        /// v, mm/s.
+        speed: f64,
+        /// Time of one step unit, s.
+        step_time: f64,
+    },
+}
+
+impl Sliding {
+    /// Time of one half period (one monotonic step unit), s.
+    pub fn half_period(&self) -> f64 {
+        match *self {
+            Sliding::Reciprocating { omega, .. } => std::f64::consts::PI / omega,
+            Sliding::Monotonic { step_time, .. } => step_time,
+        }
+    }
+}
+
+/// The heat problem of a run, reduced and ready to step.
+#[derive(Debug)]
+pub struct ThermalModel {
+    /// λ_j of each mode, 1/s.
+    rates: Vec<f64>,
+    /// Φᵀ F: the modal load of a unit flux density (mW/mm²) at each contact point
+    /// (modes × points).
+    flux_modal: Mat<f64>,
+    /// Φᵀ f₀: the modal load of the constant sources (ambient, held edges), mW.
+    source_modal: Vec<f64>,
+    /// Per mode, over one half period (one step unit): e^{−λh}, the half-sine gain and the
+    /// constant source's gain ([`crate::conduction::reduced`]).
+    half_period_gains: Vec<(f64, f64, f64)>,
+    /// The modal coordinates of the initial field.
+    initial: Vec<f64>,
+    /// The thermal gap u_n⁽²⁾ − u_n⁽¹⁾ at each contact point, mm.
+    pub gap: Affine,
+    /// The temperature (°C) at each contact point on body 1 and at its partner on body 2.
+    pub contact_temperature: [Affine; 2],
+    /// The temperature (°C) at each probe.
+    pub probes: Affine,
+    /// The temperature (°C) at sample points of each body's boundary (the Lobatto points of
+    /// its boundary edges), where the largest temperature of a body heated at its boundary
+    /// lies.
+    pub boundary: [Affine; 2],
+    /// Heat stored in each body relative to the reference temperature, mJ.
+    pub stored: [Affine; 2],
+    /// Coulomb's μ.
+    friction: f64,
+    /// The sliding's time profile.
+    sliding: Sliding,
+    /// Contact area w_i t of each point, mm².
+    area: Vec<f64>,
+    /// Figures of the set-up.
+    pub info: ThermalInfo,
+}
+
+/// Figures of a thermal model's set-up, for the summary.
+#[derive(Clone, Debug, Default)]
+pub struct ThermalInfo {
+    /// Unknowns of the full heat problem (both bodies, held ones excluded).
+    pub unknowns: usize,
+    /// Modes of the reduced model.
+    pub modes: usize,
+    /// Shifts of the reduction, 1/s.
+    pub shifts: Vec<f64>,
+    /// Interface conductance h_c of perfect contact, mW/(mm²·K) (0 with a given share).
+    pub interface_conductance: f64,
+    /// Whether heat can leave the bodies (through a held or convecting edge or the faces):
+    /// without, there is no steady state.
+    pub has_exit: bool,
+    /// Péclet number of each body, v_max L / (2 a): the largest sliding speed times half the
+    /// contact length over the material's diffusivity at the contact. Above about 1 the
+    /// heat moves with the sliding faster than it spreads.
+    pub peclet: [f64; 2],
+    /// Reference (stress-free) temperature, °C.
+    pub reference: f64,
+    /// Seconds spent building the model.
+    pub seconds: f64,
+}
+
+/// The temperature state of a run: modal coordinates and the last heat of each direction.
+#[derive(Clone, Debug)]
+pub struct ThermalState {
+    /// Modal coordinates.
+    pub a: Vec<f64>,
+    /// Time heated so far, s.
+    pub time: f64,
+    /// The modal load of one half period's flux amplitude per direction ('+', '−'), the
+    /// last one seen (None before any step of that direction).
+    last_flux: [Option<Vec<f64>>; 2],
+    /// Heat made by friction so far, mJ.
+    pub generated: f64,
+    scratch: Vec<f64>,
+}
+
+impl ThermalModel {
+    /// The state at the start of a run.
+    pub fn start(&self) -> ThermalState {
+        ThermalState {
+            a: self.initial.clone(),
+            time: 0.0,
+            last_flux: [None, None],
+            generated: 0.0,
+            scratch: vec![0.0; self.rates.len()],
+        }
+    }
+
+    /// Number of modes.
+    pub fn modes(&self) -> usize {
+        self.rates.len()
+    }
+
+    /// The thermal gap (mm) of `state` into `out`.
+    pub fn thermal_gap(&self, state: &ThermalState, out: &mut [f64]) {
+        self.gap.apply(&state.a, out);
+    }
+
+    /// The modal load of the frictional flux of `pressure` (MPa) per unit sliding speed:
+    /// Φᵀ F (μ p), mW·s/mm per mm/s of speed.
+    fn modal_flux(&self, pressure: &[f64], out: &mut [f64]) {
+        out.iter_mut().for_each(|o| *o = 0.0);
+        for (i, &p) in pressure.iter().enumerate() {
+            let q = self.friction * p.max(0.0);
+            if q == 0.0 {
+                continue;
+            }
+            for (j, o) in out.iter_mut().enumerate() {
+                *o += self.flux_modal[(j, i)] * q;
+            }
+        }
+    }
+
+    /// Advance `state` over a step of `k` half periods (monotonic: step units) in
+    /// `direction`, with the frictional heat of `pressure` (MPa, one per contact point),
+    /// alternating with the other direction's last heat (see the module docs).
+    pub fn advance(
+        &self,
+        state: &mut ThermalState,
+        pressure: &[f64],
+        direction: Direction,
+        k: usize,
+    ) {
+        let slot = usize::from(direction == Direction::Minus);
+        let mut flux = std::mem::take(&mut state.scratch);
+        self.modal_flux(pressure, &mut flux);
+        let heat: f64 = pressure
+            .iter()
+            .zip(&self.area)
+            .map(|(p, a)| self.friction * p.max(0.0) * a)
+            .sum();
+        let h = self.sliding.half_period();
+        match self.sliding {
+            Sliding::Reciprocating { amplitude, omega } => {
+                state.generated += heat * 2.0 * amplitude * k as f64;
+                let speed = amplitude * omega;
+                let cycles = k / 2;
+                let other = state.last_flux[1 - slot].as_deref().unwrap_or(&flux);
+                for (j, a) in state.a.iter_mut().enumerate() {
+                    let (e, sine, constant) = self.half_period_gains[j];
+                    let source = constant * self.source_modal[j];
+                    let g_own = sine * speed * flux[j] + source;
+                    let g_other = sine * speed * other[j] + source;
+                    if k % 2 == 1 {
+                        *a = e * *a + g_own;
+                    }
+                    // m cycles (other, own): a ← e²a + (e g_other + g_own), summed.
+                    if cycles > 0 {
+                        let rate = self.rates[j];
+                        *a = decay(rate, 2.0 * h * cycles as f64) * *a
+                            + geometric_sum(rate, 2.0 * h, cycles) * (e * g_other + g_own);
+                    }
+                }
+                match &mut state.last_flux[slot] {
+                    Some(last) => last.copy_from_slice(&flux),
+                    none => *none = Some(flux.clone()),
+                }
+            }
+            Sliding::Monotonic { speed, step_time } => {
+                let time = step_time * k as f64;
+                state.generated += heat * speed * time;
+                for ((a, &rate), (f, s)) in state
+                    .a
+                    .iter_mut()
+                    .zip(&self.rates)
+                    .zip(flux.iter().zip(&self.source_modal))
+                {
+                    *a = decay(rate, time) * *a + constant_gain(rate, time) * (speed * f + s);
+                }
+            }
+        }
+        state.time += h * k as f64;
+        state.scratch = flux;
+    }
+
+    /// The largest temperature on each body's boundary, °C.
+    pub fn max_temperatures(&self, state: &ThermalState) -> [f64; 2] {
+        [0, 1].map(|b| {
+            self.boundary[b]
+                .at(&state.a)
+                .into_iter()
+                .fold(f64::NEG_INFINITY, f64::max)
+        })
+    }
+
+    /// Heat stored in both bodies relative to the reference temperature, mJ.
+    pub fn stored_heat(&self, state: &ThermalState) -> f64 {
+        self.stored[0].at(&state.a)[0] + self.stored[1].at(&state.a)[0]
+    }
+
+    /// The sliding's profile.
+    pub fn sliding(&self) -> Sliding {
+        self.sliding
+    }
+}
+
+/// The heat of one wear run as the step loop sees it: the state, the thermal gap of the next
+/// contact solve, and the change of that gap over the current cycle.
+pub(super) struct HeatRun<'a> {
+    pub model: &'a ThermalModel,
+    pub state: ThermalState,
+    /// The thermal gap of the temperature now (mm): what the next contact solve sees.
+    pub gap: Vec<f64>,
+    /// The thermal gap at the start of the current cycle.
+    cycle_start: Vec<f64>,
+}
+
+impl<'a> HeatRun<'a> {
+    pub fn new(model: &'a ThermalModel) -> HeatRun<'a> {
+        let state = model.start();
+        let mut gap = vec![0.0; model.gap.offset.len()];
+        model.thermal_gap(&state, &mut gap);
+        HeatRun {
+            model,
+            state,
+            cycle_start: gap.clone(),
+            gap,
+        }
+    }
+
+    /// Advance over a kept step and return the probes' temperatures and each body's
+    /// largest temperature (°C) at its end.
+    pub fn after_step(
+        &mut self,
+        pressure: &[f64],
+        direction: Direction,
+        k: usize,
+    ) -> (Vec<f64>, [f64; 2]) {
+        self.model.advance(&mut self.state, pressure, direction, k);
+        self.model.thermal_gap(&self.state, &mut self.gap);
+        (
+            self.model.probes.at(&self.state.a),
+            self.model.max_temperatures(&self.state),
+        )
+    }
+
+    /// The largest change of the thermal gap over the cycle that ends now (mm), and start
+    /// the next cycle.
+    pub fn end_cycle(&mut self) -> f64 {
+        let change = self
+            .gap
+            .iter()
+            .zip(&self.cycle_start)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        self.cycle_start.copy_from_slice(&self.gap);
+        change
+    }
+}
+
+/// What a run's heat left at its end.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct ThermalHistory {
+    /// Temperature at each contact point of body 1 and at its partner on body 2 at the end
+    /// of the last completed step, °C.
+    pub contact_temperature: [Vec<f64>; 2],
+    /// The thermal gap u_n⁽²⁾ − u_n⁽¹⁾ (mm) the last completed step's pressure was solved with.
+    pub thermal_gap: Vec<f64>,
+    /// The thermal gap of the end temperature (the next step's), mm.
+    pub next_thermal_gap: Vec<f64>,
+    /// Modal coordinates of the end state (for fields and restarts).
+    #[serde(skip)]
+    pub state: Vec<f64>,
+    /// Heat made by friction over the run, mJ.
+    pub generated: f64,
+    /// Heat stored in the bodies at the end relative to the reference temperature, mJ.
+    pub stored: f64,
+    /// Time heated, s.
+    pub time: f64,
+}
+
+impl HeatRun<'_> {
+    /// The end of the run, `solved_gap` being the thermal gap of the last kept solve.
+    pub fn finish(&self, solved_gap: Vec<f64>) -> ThermalHistory {
+        let a = &self.state.a;
+        ThermalHistory {
+            contact_temperature: [
+                self.model.contact_temperature[0].at(a),
+                self.model.contact_temperature[1].at(a),
+            ],
+            thermal_gap: solved_gap,
+            next_thermal_gap: self.gap.clone(),
+            state: a.clone(),
+            generated: self.state.generated,
+            stored: self.model.stored_heat(&self.state),
+            time: self.state.time,
+        }
+    }
+}

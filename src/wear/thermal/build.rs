@@ -1,0 +1,697 @@
+//! The set-up of a run's heat problem: both bodies' conduction operators side by side with
+//! the interface of perfect contact ([`CoupledSystem`]: the full model, which the tests step
+//! as the reference), and its reduction to the modes the run steps ([`ThermalModel`]).
+
+use super::{Affine, Sliding, ThermalInfo, ThermalModel, INTERFACE_CONDUCTANCE};
+use crate::basis::Space;
+use crate::conduction::reduced::{constant_gain, decay, half_sine_gain, ReducedModel};
+use crate::conduction::transient::Sdirk2;
+use crate::conduction::{ConductionBody, ConductionSpec, EdgePiece};
+use crate::contact::CondensedContact;
+use crate::elasticity::ElasticBody;
+use crate::geometry::Point;
+use crate::heat_input::{HeatSettings, Partition};
+use crate::quadrature::gauss_lobatto;
+use faer::sparse::{SparseColMat, Triplet};
+use faer::Mat;
+use std::time::Instant;
+
+/// Errors of the heat problem's set-up.
+#[derive(Debug, thiserror::Error)]
+pub enum ThermalError {
+    /// A body's conduction operators could not be built.
+    #[error(transparent)]
+    Conduction(#[from] crate::conduction::ConductionError),
+    /// The reduction failed.
+    #[error(transparent)]
+    Reduction(#[from] crate::conduction::reduced::ReductionError),
+    /// The thermal load or the elastic solve of a body failed.
+    #[error("body \"{body}\": {message}")]
+    Elastic {
+        /// Body name.
+        body: String,
+        /// What failed.
+        message: String,
+    },
+    /// A probe is not inside body 1.
+    #[error("probe at ({}, {}) is not inside body 1", .0[0], .0[1])]
+    Probe(Point),
+}
+
+/// What the heat problem of a run is built from: the two elastic bodies of the contact (for
+/// their meshes and the thermal gap), the condensed contact (points, partners, traces), the
+/// validated `[heat]` section, and the sliding.
+pub struct ThermalBodies<'a> {
+    /// Body 1 and body 2, as the contact stage built them (body 1 clamped at its plate edge).
+    pub elastic: [&'a ElasticBody; 2],
+    /// The contact.
+    pub contact: &'a CondensedContact,
+    /// The `[heat]` section.
+    pub settings: &'a HeatSettings,
+    /// The elements' polynomial space.
+    pub space: Space,
+    /// The sliding (time profile of the heat).
+    pub sliding: Sliding,
+    /// Points where the temperature of body 1 is reported, mm.
+    pub probes: Vec<Point>,
+}
+
+/// Shifts of the reduction as multiples of 1/h (h the half period): from a thousand half
+/// periods (the bodies' slow warming; σ = 0 adds the stationary response) to a tenth of one
+/// (the ripple within a half period, which the run samples at its ends).
+pub const SHIFTS: [f64; 6] = [1.0 / 1024.0, 1.0 / 64.0, 1.0 / 8.0, 1.0 / 2.0, 2.0, 8.0];
+
+/// An output of the full model: y = M T + c over the combined free unknowns.
+#[derive(Clone, Debug)]
+pub struct FullOutput {
+    /// M (outputs × unknowns).
+    pub matrix: Mat<f64>,
+    /// c (outputs).
+    pub offset: Vec<f64>,
+}
+
+impl FullOutput {
+    /// The outputs of field `t` (combined free unknowns).
+    pub fn at(&self, t: &[f64]) -> Vec<f64> {
+        (0..self.offset.len())
+            .map(|i| {
+                self.offset[i]
+                    + (0..t.len())
+                        .map(|j| self.matrix[(i, j)] * t[j])
+                        .sum::<f64>()
+            })
+            .collect()
+    }
+
+    fn reduce(&self, model: &ReducedModel) -> Affine {
+        Affine {
+            matrix: &self.matrix * &model.modes,
+            offset: self.offset.clone(),
+        }
+    }
+
+    fn of_traces(traces: &[Split], size: usize) -> FullOutput {
+        let mut matrix = Mat::<f64>::zeros(traces.len(), size);
+        for (i, s) in traces.iter().enumerate() {
+            for &(g, c) in &s.free {
+                matrix[(i, g)] += c;
+            }
+        }
+        FullOutput {
+            matrix,
+            offset: traces.iter().map(|s| s.held).collect(),
+        }
+    }
+}
+
+/// The heat problem of a run in full: C Ṫ + K T = f₀ + F q(t) over both bodies' free
+/// unknowns (body 1's first), and its outputs.
+pub struct CoupledSystem {
+    /// K (mW/K), both triangles.
+    pub conductivity: SparseColMat<usize, f64>,
+    /// C (mJ/K), both triangles.
+    pub capacity: SparseColMat<usize, f64>,
+    /// f₀: the constant sources, mW.
+    pub source: Vec<f64>,
+    /// F: the load of a unit flux density (mW/mm²) at each contact point (unknowns × points).
+    pub flux: Mat<f64>,
+    /// The initial field.
+    pub initial: Vec<f64>,
+    /// The thermal gap (mm) at each contact point.
+    pub gap: FullOutput,
+    /// The temperature at each contact point of body 1 and at its partner on body 2.
+    pub contact_temperature: [FullOutput; 2],
+    /// The temperature at each probe.
+    pub probes: FullOutput,
+    /// The temperature at each body's boundary samples.
+    pub boundary: [FullOutput; 2],
+    /// The heat stored in each body relative to the reference temperature, mJ.
+    pub stored: [FullOutput; 2],
+    /// Constant vectors of each body (1 on its free unknowns' uniform field).
+    constants: [Vec<f64>; 2],
+    /// Whether heat can leave.
+    pub has_exit: bool,
+    /// Interface conductance, mW/(mm²·K).
+    pub conductance: f64,
+    /// Péclet numbers.
+    peclet: [f64; 2],
+    /// Contact areas w_i t, mm².
+    area: Vec<f64>,
+}
+
+/// A trace over one body's full unknowns as (combined free index, coefficient) pairs and the
+/// held part's value.
+struct Split {
+    free: Vec<(usize, f64)>,
+    held: f64,
+}
+
+fn split(body: &ConductionBody, held: &[f64], offset: usize, trace: &[(usize, f64)]) -> Split {
+    let mut out = Split {
+        free: Vec::with_capacity(trace.len()),
+        held: 0.0,
+    };
+    for &(g, c) in trace {
+        match body.free_index(g) {
+            Some(f) => out.free.push((offset + f, c)),
+            None => out.held += c * held[g],
+        }
+    }
+    out
+}
+
+/// The scalar trace of a contact constraint from its displacement trace: the scalar boundary
+/// numbering is the vector one halved ([`crate::dofs::DofMap::scalar`]), and the shape
+/// function values are the same.
+fn scalar_trace(trace: &crate::contact::Trace) -> Vec<(usize, f64)> {
+    trace.iter().map(|&(g, c)| (g[0] / 2, c)).collect()
+}
+
+impl CoupledSystem {
+    /// The full heat problem of a run.
+    pub fn new(input: &ThermalBodies<'_>) -> Result<CoupledSystem, ThermalError> {
+        let settings = input.settings;
+        let contact = input.contact;
+        let n = contact.len();
+        let specs = [0, 1].map(|b| conduction_spec(input, b));
+        let thermal = [
+            ConductionBody::new(&input.elastic[0].mesh, &specs[0])?,
+            ConductionBody::new(&input.elastic[1].mesh, &specs[1])?,
+        ];
+        let held = [0, 1].map(|b| thermal[b].expand(&vec![0.0; thermal[b].n_free()]));
+        let (n1, n2) = (thermal[0].n_free(), thermal[1].n_free());
+        let size = n1 + n2;
+        let offsets = [0, n1];
+        let traces: [Vec<Split>; 2] = [0, 1].map(|b| {
+            contact.traces[b]
+                .iter()
+                .map(|t| split(&thermal[b], &held[b], offsets[b], &scalar_trace(t)))
+                .collect()
+        });
+        let mut k_trip = Vec::new();
+        let mut c_trip = Vec::new();
+        let mut source = vec![0.0; size];
+        for b in 0..2 {
+            push_matrix(&thermal[b].conductivity, offsets[b], &mut k_trip);
+            push_matrix(&thermal[b].capacity, offsets[b], &mut c_trip);
+            source[offsets[b]..offsets[b] + thermal[b].n_free()].copy_from_slice(&thermal[b].load);
+        }
+        let area = contact.areas();
+        let conductance = match settings.partition {
+            Partition::Perfect => {
+                let k_max = settings
+                    .materials
+                    .iter()
+                    .map(|m| m.conductivity)
+                    .fold(0.0, f64::max);
+                let w_min = contact
+                    .points
+                    .weight
+                    .iter()
+                    .cloned()
+                    .fold(f64::INFINITY, f64::min);
+                INTERFACE_CONDUCTANCE * k_max / w_min
+            }
+            Partition::Fraction(_) => 0.0,
+        };
+        if conductance > 0.0 {
+            for i in 0..n {
+                // h_c w t (e₁ − e₂)(e₁ − e₂)ᵀ, the held parts moved to the sources.
+                let weight = conductance * area[i];
+                let mut e: Vec<(usize, f64)> = traces[0][i].free.clone();
+                e.extend(traces[1][i].free.iter().map(|&(g, c)| (g, -c)));
+                for &(a, ca) in &e {
+                    for &(bb, cb) in &e {
+                        k_trip.push(Triplet::new(a, bb, weight * ca * cb));
+                    }
+                    source[a] -= weight * ca * (traces[0][i].held - traces[1][i].held);
+                }
+            }
+        }
+        let conductivity = SparseColMat::try_new_from_triplets(size, size, &k_trip)
+            .expect("indices within the combined system");
+        let capacity = SparseColMat::try_new_from_triplets(size, size, &c_trip)
+            .expect("indices within the combined system");
+        // A unit flux density at point i: w_i t on the receiving body's trace (body 1's under
+        // perfect contact: the tie shares it).
+        let share = match settings.partition {
+            Partition::Perfect => 1.0,
+            Partition::Fraction(f) => f,
+        };
+        let mut flux = Mat::<f64>::zeros(size, n);
+        for i in 0..n {
+            for (b, part) in [(0, share), (1, 1.0 - share)] {
+                if part == 0.0 {
+                    continue;
+                }
+                for &(g, c) in &traces[b][i].free {
+                    flux[(g, i)] += part * c * area[i];
+                }
+            }
+        }
+        let body_vector = |b: usize, field: Vec<f64>| {
+            let mut v = vec![0.0; size];
+            v[offsets[b]..offsets[b] + field.len()].copy_from_slice(&field);
+            v
+        };
+        let initial: Vec<f64> = [0, 1]
+            .iter()
+            .flat_map(|&b| thermal[b].restrict(&thermal[b].uniform(settings.initial)))
+            .collect();
+        let constants =
+            [0, 1].map(|b| body_vector(b, thermal[b].restrict(&thermal[b].uniform(1.0))));
+        let has_exit = match settings.partition {
+            Partition::Perfect => thermal[0].has_exit || thermal[1].has_exit,
+            Partition::Fraction(_) => thermal[0].has_exit && thermal[1].has_exit,
+        };
+        let gap = thermal_gap(input, &thermal, &held, offsets, size)?;
+        let contact_temperature = [0, 1].map(|b| FullOutput::of_traces(&traces[b], size));
+        let mut probe_traces = Vec::new();
+        for &x in &input.probes {
+            let (element, xi, eta) = thermal[0].mesh.locate(x).ok_or(ThermalError::Probe(x))?;
+            probe_traces.push(split(
+                &thermal[0],
+                &held[0],
+                0,
+                &thermal[0].point_trace(element, xi, eta),
+            ));
+        }
+        let probes = FullOutput::of_traces(&probe_traces, size);
+        let boundary = [0, 1].map(|b| {
+            let samples = boundary_samples(&thermal[b], &settings.bodies[b].contact_edge);
+            let splits: Vec<Split> = samples
+                .iter()
+                .map(|t| split(&thermal[b], &held[b], offsets[b], t))
+                .collect();
+            FullOutput::of_traces(&splits, size)
+        });
+        let stored = [0, 1]
+            .map(|b| stored_output(&thermal[b], &held[b], offsets[b], size, settings.reference));
+        let peclet = [0, 1].map(|b| peclet(input, &thermal[b], b));
+        Ok(CoupledSystem {
+            conductivity,
+            capacity,
+            source,
+            flux,
+            initial,
+            gap,
+            contact_temperature,
+            probes,
+            boundary,
+            stored,
+            constants,
+            has_exit,
+            conductance,
+            peclet,
+            area,
+        })
+    }
+
+    /// Number of unknowns.
+    pub fn len(&self) -> usize {
+        self.source.len()
+    }
+
+    /// Whether there are no unknowns.
+    pub fn is_empty(&self) -> bool {
+        self.source.is_empty()
+    }
+
+    /// Advance the full model by one half period of reciprocating sliding at `omega` (rad/s)
+    /// in `substeps` SDIRK2 steps of `stepper` (made for that sub-step length), the frictional
+    /// flux being `amplitude` (mW/mm², one per contact point) times sin ωt: the reference the
+    /// reduced model is checked against.
+    pub fn reference_half_period(
+        &self,
+        t: &mut [f64],
+        stepper: &Sdirk2,
+        amplitude: &[f64],
+        omega: f64,
+        substeps: usize,
+    ) {
+        let mut load = vec![0.0; self.len()];
+        for (j, &q) in amplitude.iter().enumerate() {
+            for (i, l) in load.iter_mut().enumerate() {
+                *l += self.flux[(i, j)] * q;
+            }
+        }
+        let h = std::f64::consts::PI / omega / substeps as f64;
+        for step in 0..substeps {
+            stepper.advance(t, step as f64 * h, |tau| {
+                let s = (omega * tau).sin();
+                self.source
+                    .iter()
+                    .zip(&load)
+                    .map(|(f, l)| f + l * s)
+                    .collect()
+            });
+        }
+    }
+
+    /// A stepper of the full model for steps of `step` s.
+    pub fn stepper(&self, step: f64) -> Option<Sdirk2> {
+        Sdirk2::new(&self.conductivity, &self.capacity, step)
+    }
+
+    /// The shifts of the reduction for half periods (step units) of `half_period` s.
+    pub fn shifts(&self, half_period: f64) -> Vec<f64> {
+        let mut shifts: Vec<f64> = if self.has_exit { vec![0.0] } else { vec![] };
+        shifts.extend(SHIFTS.iter().map(|s| s / half_period));
+        shifts
+    }
+
+    /// The reduced model of this system at `shifts` (1/s).
+    pub fn reduce(&self, shifts: &[f64]) -> Result<ReducedModel, ThermalError> {
+        let n = self.flux.ncols();
+        let size = self.len();
+        let mut inputs = Mat::<f64>::zeros(size, n + 2);
+        let mut c_initial = vec![0.0; size];
+        crate::conduction::add_product(&self.capacity, &self.initial, &mut c_initial);
+        for i in 0..size {
+            for j in 0..n {
+                inputs[(i, j)] = self.flux[(i, j)];
+            }
+            inputs[(i, n)] = self.source[i];
+            inputs[(i, n + 1)] = c_initial[i];
+        }
+        let mut extra: Vec<Vec<f64>> = self.constants.to_vec();
+        extra.push(self.initial.clone());
+        Ok(ReducedModel::new(
+            &self.conductivity,
+            &self.capacity,
+            inputs.as_ref(),
+            shifts,
+            &extra,
+        )?)
+    }
+}
+
+impl ThermalModel {
+    /// Build the heat problem of a run: the full system, reduced at the default shifts.
+    pub fn build(input: ThermalBodies<'_>) -> Result<ThermalModel, ThermalError> {
+        let start = Instant::now();
+        let system = CoupledSystem::new(&input)?;
+        let shifts = system.shifts(input.sliding.half_period());
+        Self::from_system(&system, &shifts, &input, start)
+    }
+
+    /// The reduced model of `system` at `shifts` (1/s).
+    pub fn from_system(
+        system: &CoupledSystem,
+        shifts: &[f64],
+        input: &ThermalBodies<'_>,
+        start: Instant,
+    ) -> Result<ThermalModel, ThermalError> {
+        let model = system.reduce(shifts)?;
+        let flux_modal = model.project(system.flux.as_ref());
+        let source_col = Mat::from_fn(system.len(), 1, |i, _| system.source[i]);
+        let source_modal = model
+            .project(source_col.as_ref())
+            .col(0)
+            .iter()
+            .copied()
+            .collect();
+        let initial = model.coordinates(&system.capacity, &system.initial);
+        let info = ThermalInfo {
+            unknowns: system.len(),
+            modes: model.len(),
+            shifts: shifts.to_vec(),
+            interface_conductance: system.conductance,
+            has_exit: system.has_exit,
+            peclet: system.peclet,
+            reference: input.settings.reference,
+            seconds: start.elapsed().as_secs_f64(),
+        };
+        let h = input.sliding.half_period();
+        let omega = match input.sliding {
+            Sliding::Reciprocating { omega, .. } => omega,
+            Sliding::Monotonic { .. } => 0.0,
+        };
+        let half_period_gains = model
+            .rates
+            .iter()
+            .map(|&rate| {
+                let sine = if omega > 0.0 {
+                    half_sine_gain(rate, omega)
+                } else {
+                    0.0
+                };
+                (decay(rate, h), sine, constant_gain(rate, h))
+            })
+            .collect();
+        Ok(ThermalModel {
+            half_period_gains,
+            rates: model.rates.clone(),
+            flux_modal,
+            source_modal,
+            initial,
+            gap: system.gap.reduce(&model),
+            contact_temperature: [0, 1].map(|b| system.contact_temperature[b].reduce(&model)),
+            probes: system.probes.reduce(&model),
+            boundary: [0, 1].map(|b| system.boundary[b].reduce(&model)),
+            stored: [0, 1].map(|b| system.stored[b].reduce(&model)),
+            friction: input.contact.friction,
+            sliding: input.sliding,
+            area: system.area.clone(),
+            info,
+        })
+    }
+}
+
+/// The conduction spec of contact body `b`: its edge conditions, and for body 2 the part of
+/// its contact edge that body 1 does not cover.
+fn conduction_spec(input: &ThermalBodies<'_>, b: usize) -> ConductionSpec {
+    let settings = input.settings;
+    let body = input.elastic[b];
+    let heat = &settings.bodies[b];
+    let mut edges = heat.edges.clone();
+    if let Some(condition) = heat.uncovered {
+        edges.extend(
+            uncovered_pieces(body, &heat.contact_edge, input.contact)
+                .into_iter()
+                .map(|p| (p, condition)),
+        );
+    }
+    ConductionSpec {
+        name: body.name.clone(),
+        p: body.dofs.p,
+        space: input.space,
+        thickness: body.analysis.thickness(),
+        materials: settings.materials.iter().map(|m| Some(*m)).collect(),
+        edges,
+        faces: settings.faces,
+    }
+}
+
+/// The parts of body 2's contact edge outside the segment between the partners of the first
+/// and the last contact point: element edges wholly outside it, and the end partners'
+/// elements cut at the partner.
+fn uncovered_pieces(
+    body: &ElasticBody,
+    edge: &[(usize, usize)],
+    contact: &CondensedContact,
+) -> Vec<EdgePiece> {
+    let mesh = &body.mesh;
+    let pts = &contact.points;
+    let last = pts.x.len() - 1;
+    let ends: Vec<(usize, usize, f64)> = [0, last]
+        .iter()
+        .filter_map(|&i| {
+            mesh.cross_edges(edge, pts.x[i], pts.normal[i])
+                .map(|(_, e, l, t)| (e, l, t))
+        })
+        .collect();
+    // Positions along body 1's tangent: the covered segment lies between the end partners.
+    let tangent = pts.tangent[0];
+    let along = |x: Point| x[0] * tangent[0] + x[1] * tangent[1];
+    let (a, b) = (along(pts.partner[0]), along(pts.partner[last]));
+    let (lo, hi) = (a.min(b), a.max(b));
+    let outside = |element: usize, local: usize, t0: f64, t1: f64| {
+        let mid = along(mesh.point_on_edge(element, local, 0.5 * (t0 + t1)));
+        mid < lo || mid > hi
+    };
+    let mut pieces = Vec::new();
+    for &(element, local) in edge {
+        let mut cuts = vec![-1.0];
+        cuts.extend(
+            ends.iter()
+                .filter(|&&(e, l, _)| e == element && l == local)
+                .map(|&(_, _, t)| t),
+        );
+        cuts.push(1.0);
+        cuts.sort_by(f64::total_cmp);
+        for w in cuts.windows(2) {
+            if w[1] - w[0] > 1e-12 && outside(element, local, w[0], w[1]) {
+                pieces.push(EdgePiece {
+                    element,
+                    local,
+                    t: [w[0], w[1]],
+                });
+            }
+        }
+    }
+    pieces
+}
+
+fn push_matrix(
+    a: &SparseColMat<usize, f64>,
+    offset: usize,
+    out: &mut Vec<Triplet<usize, usize, f64>>,
+) {
+    let col_ptr = a.symbolic().col_ptr();
+    let row_idx = a.symbolic().row_idx();
+    for j in 0..a.ncols() {
+        let range = col_ptr[j]..col_ptr[j + 1];
+        for (&i, &v) in row_idx[range.clone()].iter().zip(&a.val()[range]) {
+            out.push(Triplet::new(offset + i, offset + j, v));
+        }
+    }
+}
+
+/// Where each body's largest temperature is looked for: the Lobatto points of its contact
+/// edge (where the heat enters), and the ends and middle of every other boundary edge (held
+/// and convecting edges, where a hot ambient or a held temperature can lead). A body heated
+/// only at its boundary has its largest temperature on the boundary (the maximum principle).
+fn boundary_samples(
+    body: &ConductionBody,
+    contact_edge: &[(usize, usize)],
+) -> Vec<Vec<(usize, f64)>> {
+    let lobatto = gauss_lobatto(body.basis.p + 1).points;
+    let mut samples = Vec::new();
+    for (element, local, _) in crate::heat_input::boundary_edges(&body.mesh) {
+        let points: &[f64] = if contact_edge.contains(&(element, local)) {
+            &lobatto
+        } else {
+            &[-1.0, 0.0, 1.0]
+        };
+        for &t in points {
+            samples.push(body.edge_trace(element, local, t));
+        }
+    }
+    samples
+}
+
+fn stored_output(
+    body: &ConductionBody,
+    held: &[f64],
+    offset: usize,
+    size: usize,
+    reference: f64,
+) -> FullOutput {
+    let weights = body.heat_content_weights();
+    let uniform = body.uniform(reference);
+    let mut constant = 0.0;
+    let mut matrix = Mat::<f64>::zeros(1, size);
+    for (g, &w) in weights.iter().enumerate() {
+        match body.free_index(g) {
+            Some(f) => {
+                matrix[(0, offset + f)] = w;
+                constant -= w * uniform[g];
+            }
+            None => constant += w * (held[g] - uniform[g]),
+        }
+    }
+    FullOutput {
+        matrix,
+        offset: vec![constant],
+    }
+}
+
+/// The thermal gap u_n⁽²⁾ − u_n⁽¹⁾ per unit temperature of each unknown, by the adjoint of
+/// each body's elastic solve (see the module docs).
+fn thermal_gap(
+    input: &ThermalBodies<'_>,
+    thermal: &[ConductionBody; 2],
+    held: &[Vec<f64>; 2],
+    offsets: [usize; 2],
+    size: usize,
+) -> Result<FullOutput, ThermalError> {
+    let contact = input.contact;
+    let n = contact.len();
+    let expansion: Vec<f64> = input
+        .settings
+        .materials
+        .iter()
+        .map(|m| m.expansion)
+        .collect();
+    let mut matrix = Mat::<f64>::zeros(n, size);
+    let mut offset = vec![0.0; n];
+    for b in 0..2 {
+        let body = input.elastic[b];
+        let heat = &thermal[b];
+        let elastic_error = |message: String| ThermalError::Elastic {
+            body: body.name.clone(),
+            message,
+        };
+        let loads = body
+            .thermal_loads(&expansion)
+            .map_err(|e| elastic_error(e.to_string()))?;
+        // X = K⁻¹ N: the displacement of a unit normal force at each contact point's trace;
+        // stored transposed (points × dofs) so that a dof's row of X is contiguous.
+        let mut x = Mat::<f64>::zeros(body.dofs.n_dofs(), n);
+        for (i, trace) in contact.traces[b].iter().enumerate() {
+            let normal = contact.points.normal[i];
+            for &(g, c) in trace {
+                x[(g[0], i)] += c * normal[0];
+                x[(g[1], i)] += c * normal[1];
+            }
+        }
+        body.solve_in_place(&mut x)
+            .map_err(|e| elastic_error(e.to_string()))?;
+        let xt = x.transpose().to_owned();
+        let sign = if b == 0 { -1.0 } else { 1.0 };
+        let reference = heat.uniform(input.settings.reference);
+        // G = Xᵀ F, element by element: the normal displacement at each point per unit
+        // temperature of each of the element's modes.
+        let mut column = vec![0.0; n];
+        for element in 0..body.mesh.elements.len() {
+            let ed = body.dofs.element_dofs(&body.mesh, element);
+            let f = body.thermal_load_matrix(&loads, element);
+            for (m, (tg, ts)) in heat.element_unknowns(element).into_iter().enumerate() {
+                column.iter_mut().for_each(|c| *c = 0.0);
+                for (r, (&ug, &us)) in ed.global.iter().zip(&ed.sign).enumerate() {
+                    let coef = sign * us * ts * f[(r, m)];
+                    if coef == 0.0 {
+                        continue;
+                    }
+                    let row = xt.col(ug);
+                    for (c, xv) in column.iter_mut().zip(row.iter()) {
+                        *c += coef * xv;
+                    }
+                }
+                // Free unknowns into the matrix; held ones and the reference are constants.
+                let constant = match heat.free_index(tg) {
+                    Some(f) => {
+                        for (i, &c) in column.iter().enumerate() {
+                            matrix[(i, offsets[b] + f)] += c;
+                        }
+                        -reference[tg]
+                    }
+                    None => held[b][tg] - reference[tg],
+                };
+                if constant != 0.0 {
+                    for (o, &c) in offset.iter_mut().zip(&column) {
+                        *o += c * constant;
+                    }
+                }
+            }
+        }
+    }
+    Ok(FullOutput { matrix, offset })
+}
+
+/// v_max L / (2 a) of body `b` at the contact (see [`ThermalInfo::peclet`]).
+fn peclet(input: &ThermalBodies<'_>, body: &ConductionBody, b: usize) -> f64 {
+    let speed = match input.sliding {
+        Sliding::Reciprocating { amplitude, omega } => amplitude * omega,
+        Sliding::Monotonic { speed, .. } => speed,
+    };
+    let length: f64 = input.contact.points.weight.iter().sum();
+    let element = input.settings.bodies[b]
+        .contact_edge
+        .first()
+        .map_or(0, |&(e, _)| e);
+    let material = body.mesh.elements.get(element).map_or(0, |e| e.material);
+    let diffusivity = input.settings.materials[material].diffusivity();
+    speed * length / (2.0 * diffusivity)
+}
