@@ -89,5 +89,7 @@ pub use input::{examples, heat as heat_input, overrides, problem, schema, wear_u
 pub use jobs::{driver, p_check, steady_check, sweep, validate, validity};
 pub use report::{deformation, output, plot, vtk};
 pub use solver::{capacitance, complementarity, dense, lemke, updated_lu};
-pub use steady_state::{monotonic_shape, paper_steady, spline_method, steady};
+pub use steady_state::{
+    monotonic_shape, paper_steady, spline_method, steady, thermal as thermal_steady,
+};
 pub use wear::kinematics;

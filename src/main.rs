@@ -515,7 +515,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             if method != SteadyMethod::Exact {
                 return steady_by(&p, method, settings, &out, wants_vtk(vtk, &p));
             }
-            let (state, contact, seconds) = driver::steady(&p)?;
+            let (state, contact, seconds, heat) = driver::steady_with_heat(&p)?;
             if state.status != wearfem::steady::SteadyStatus::Solved {
                 // Nothing from an unconverged iteration is written as a result.
                 let hint = wearfem::steady::failure_hint(&state, &contact);
@@ -527,6 +527,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
             let warnings = driver::steady_warnings(&p, &contact, &state);
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds, &warnings)?;
+            if let Some(heat) = &heat {
+                wearfem::output::write_steady_heat(&out, &p, &contact, heat)?;
+            }
             if let Some(note) = driver::target_mesh_note(&p, &contact) {
                 println!("{note}");
             }

@@ -392,6 +392,23 @@ pub fn unbalanced_loads(problem: &Problem, contact: &CondensedContact) -> Option
 pub fn steady(
     problem: &Problem,
 ) -> Result<(crate::steady::SteadyState, CondensedContact, f64), JobError> {
+    let (state, contact, seconds, _) = steady_with_heat(problem)?;
+    Ok((state, contact, seconds))
+}
+
+/// [`steady`], with the periodic temperature of a problem with `[heat]` (None without): the
+/// steady state of the wear and the heat together ([`crate::thermal_steady`]).
+pub fn steady_with_heat(
+    problem: &Problem,
+) -> Result<
+    (
+        crate::steady::SteadyState,
+        CondensedContact,
+        f64,
+        Option<crate::thermal_steady::PeriodicHeat>,
+    ),
+    JobError,
+> {
     let spec = problem
         .spec
         .wear
@@ -405,27 +422,44 @@ pub fn steady(
     method(problem)?;
     direction(problem)?;
     let start = Instant::now();
-    let (contact, _, _) = CondensedContact::build(problem)?;
+    let (contact, body1, body2) = CondensedContact::build(problem)?;
     check_contact_probes(problem, &contact)?;
     check_shape_zero(problem, &contact)?;
-    let state = crate::steady::steady_state(
-        &contact,
-        &integrator.half_period_wear(),
-        if integrator.is_monotonic() {
-            crate::steady::SteadySliding::Monotonic(direction(problem)?)
-        } else {
-            crate::steady::SteadySliding::Reciprocating
-        },
-        Default::default(),
-    )
-    .map_err(|e| {
+    let sliding = if integrator.is_monotonic() {
+        crate::steady::SteadySliding::Monotonic(direction(problem)?)
+    } else {
+        crate::steady::SteadySliding::Reciprocating
+    };
+    let steady_error = |e: crate::steady::SteadyError| {
         let key = match e {
             crate::steady::SteadyError::NoRigidMotion => "plate.motion",
             crate::steady::SteadyError::NoWear => "wear.body1.beta",
         };
         problem.error(key, e.to_string())
-    })?;
-    Ok((state, contact, start.elapsed().as_secs_f64()))
+    };
+    let terms = integrator.half_period_wear();
+    let (state, heat) = match super::heat::thermal_model(problem, &contact, [&body1, &body2])? {
+        None => (
+            crate::steady::steady_state(&contact, &terms, sliding, Default::default())
+                .map_err(steady_error)?,
+            None,
+        ),
+        Some(model) => {
+            let solved = crate::thermal_steady::steady_state_with_heat(
+                &contact,
+                &terms,
+                sliding,
+                Default::default(),
+                &model,
+            )
+            .map_err(|e| match e {
+                crate::thermal_steady::ThermalSteadyError::Steady(e) => steady_error(e),
+                no_exit => problem.error("heat", no_exit.to_string()),
+            })?;
+            (solved.state, Some(solved.heat))
+        }
+    };
+    Ok((state, contact, start.elapsed().as_secs_f64(), heat))
 }
 
 /// The periodic steady state of `problem` by one of the paper's §6 methods or the exact one

@@ -5,8 +5,10 @@
 use super::driver::JobError;
 use crate::contact::CondensedContact;
 use crate::elasticity::ElasticBody;
+use crate::jobs::json::{number, numbers};
 use crate::problem::Problem;
-use crate::wear::thermal::{Sliding, ThermalBodies, ThermalModel};
+use crate::wear::thermal::{Sliding, ThermalBodies, ThermalHistory, ThermalInfo, ThermalModel};
+use serde_json::{json, Value};
 
 /// The thermal model of `problem` (None without `[heat]`), built on the contact's bodies.
 pub fn thermal_model(
@@ -60,4 +62,22 @@ pub fn thermal_model(
         ))
     })?;
     Ok(Some(model))
+}
+
+/// The `heat` block of a run's summary.json: the model's figures and the heat balance.
+pub fn summary(info: &ThermalInfo, thermal: &ThermalHistory) -> Value {
+    json!({
+        "reference_temperature": number(info.reference),
+        "unknowns": info.unknowns,
+        "modes": info.modes,
+        "shifts_per_s": numbers(&info.shifts),
+        "interface_conductance": number(info.interface_conductance),
+        "heat_can_leave": info.has_exit,
+        "peclet": numbers(&info.peclet),
+        "setup_seconds": info.seconds,
+        "heated_seconds": number(thermal.time),
+        "generated_mJ": number(thermal.generated),
+        "stored_mJ": number(thermal.stored),
+        "next_thermal_gap": numbers(&thermal.next_thermal_gap),
+    })
 }

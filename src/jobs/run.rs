@@ -38,6 +38,10 @@ pub struct WearRun {
     pub shape_zero_at: Option<f64>,
     /// The run's warnings ([`run_warnings`]), made on first use by [`WearRun::warnings`].
     warnings: std::sync::OnceLock<Vec<String>>,
+    /// The names of body 1 and body 2 of the contact.
+    pub body_names: [String; 2],
+    /// With heat: the heat problem's set-up figures.
+    pub heat: Option<crate::wear::thermal::ThermalInfo>,
 }
 
 /// `wear.shape_zero_at` shifts the worn shape by a vertical rigid translation of the punch,
@@ -133,6 +137,12 @@ pub fn wear_until(
         records_past_end.dedup();
     }
     let steady_check = super::steady_check::check(&contact, &integrator, &history);
+    let body_names = problem
+        .spec
+        .contact
+        .as_ref()
+        .map(|c| [c.body.clone(), c.target_body.clone()])
+        .unwrap_or_default();
     Ok(WearRun {
         contact,
         history,
@@ -144,6 +154,8 @@ pub fn wear_until(
         steady_check,
         shape_zero_at: spec.shape_zero_at,
         warnings: std::sync::OnceLock::new(),
+        body_names,
+        heat: integrator.heat.as_ref().map(|m| m.info.clone()),
     })
 }
 
@@ -233,6 +245,11 @@ impl WearRun {
                         // δw compares the two half cycles of a period: none in one direction.
                         step.as_object_mut().map(|o| o.remove("delta_w"));
                     }
+                    if let Some(max) = s.max_temperature {
+                        let temperatures: serde_json::Map<String, Value> = self.probes.iter().zip(&s.temperatures).map(|((n, _), v)| (n.clone(), number(*v))).collect();
+                        step["temperatures"] = Value::Object(temperatures);
+                        step["max_temperature"] = json!(numbers(&max));
+                    }
                     step
                 }
             })
@@ -280,6 +297,13 @@ impl WearRun {
         }
         if !self.records_past_end.is_empty() {
             summary["records_past_end"] = json!(self.records_past_end);
+        }
+        if let (Some(info), Some(thermal)) = (&self.heat, &h.thermal) {
+            summary["heat"] = super::heat::summary(info, thermal);
+            if let Some(f) = summary["final"].as_object_mut() {
+                f.insert("contact_temperature".into(), json!({ "body1": numbers(&thermal.contact_temperature[0]), "body2": numbers(&thermal.contact_temperature[1]) }));
+                f.insert("thermal_gap".into(), numbers(&thermal.thermal_gap));
+            }
         }
         match &h.steady_distance {
             Some(d) => {

@@ -106,15 +106,29 @@ pub fn check(
     } else {
         vec![&history.p_plus, &history.p_minus]
     };
-    let state = match steady_state_near(
-        contact,
-        &integrator.half_period_wear(),
-        sliding,
-        Default::default(),
-        Some(&near),
-    ) {
+    // With heat the steady state is the one with the periodic temperature.
+    let solved = match integrator.heat.as_deref() {
+        None => steady_state_near(
+            contact,
+            &integrator.half_period_wear(),
+            sliding,
+            Default::default(),
+            Some(&near),
+        )
+        .map_err(|e| e.to_string()),
+        Some(model) => crate::thermal_steady::steady_state_with_heat(
+            contact,
+            &integrator.half_period_wear(),
+            sliding,
+            Default::default(),
+            model,
+        )
+        .map(|s| s.state)
+        .map_err(|e| e.to_string()),
+    };
+    let state = match solved {
         Ok(state) => state,
-        Err(e) => return SteadyCheck::Unavailable(e.to_string()),
+        Err(e) => return SteadyCheck::Unavailable(e),
     };
     if state.status != SteadyStatus::Solved {
         if !integrator.is_monotonic() {

@@ -59,7 +59,9 @@ pub fn write_csv(
 
 pub use crate::jobs::json::{named, number, numbers};
 
+mod heat;
 mod stale;
+pub use heat::{write_heat, write_steady_heat};
 pub use stale::remove_earlier_outputs;
 
 fn plot_error(path: &Path) -> impl Fn(String) -> OutputError + '_ {
@@ -196,6 +198,11 @@ pub fn write_wear(
         header.pop();
     }
     header.extend(run.probes.iter().map(|(n, _)| format!("p_{n}_MPa")));
+    let heat = h.thermal.is_some();
+    if heat {
+        header.extend(run.probes.iter().map(|(n, _)| format!("T_{n}_C")));
+        header.extend(run.body_names.iter().map(|b| format!("max_T_{b}_C")));
+    }
     let rows: Vec<Vec<Value>> = h
         .steps
         .iter()
@@ -214,6 +221,10 @@ pub fn write_wear(
                 r.push(number(s.delta_w));
             }
             r.extend(s.probes.iter().map(|&v| number(v)));
+            if heat {
+                r.extend(s.temperatures.iter().map(|&v| number(v)));
+                r.extend(s.max_temperature.unwrap_or([f64::NAN; 2]).map(number));
+            }
             r
         })
         .collect();
@@ -293,6 +304,7 @@ pub fn write_wear(
         &series,
     )
     .map_err(plot_error(&path))?;
+    write_heat(dir, &name, run)?;
     crate::plot::wear_figures(dir, &name, run).map_err(plot_error(dir))
 }
 

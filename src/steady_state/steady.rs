@@ -155,6 +155,9 @@ struct System<'a> {
     load: &'a [f64],
     /// Mean contact pressure F/A (MPa): the scale of the secant slope at p = 0.
     reference_pressure: f64,
+    /// A gap each half cycle sees besides the shape (mm, one per point; empty: none): the
+    /// thermal distortion at the start of that half ([`steady_state_with_offsets`]).
+    offset: Vec<Vec<f64>>,
 }
 
 impl System<'_> {
@@ -174,16 +177,22 @@ impl System<'_> {
     fn gap_at(&self, z: &[f64], h: usize, i: usize) -> f64 {
         let (n, m) = (self.n, self.m);
         let a = &self.gap[h][i * n..(i + 1) * n];
-        z[i] + (0..n).map(|j| a[j] * z[self.force(h, j)]).sum::<f64>()
+        z[i] + self.offset_at(h, i)
+            + (0..n).map(|j| a[j] * z[self.force(h, j)]).sum::<f64>()
             + (0..m)
                 .map(|k| self.rigid[i * m + k] * z[self.lambda(h, k)])
                 .sum::<f64>()
+    }
+    /// The offset of half `h` at point `i` (mm).
+    fn offset_at(&self, h: usize, i: usize) -> f64 {
+        self.offset.get(h).map_or(0.0, |o| o[i])
     }
     /// Sum of the sizes of the terms of [`System::gap_at`] (mm): the scale of its round-off.
     fn gap_terms(&self, z: &[f64], h: usize, i: usize) -> f64 {
         let (n, m) = (self.n, self.m);
         let a = &self.gap[h][i * n..(i + 1) * n];
         z[i].abs()
+            + self.offset_at(h, i).abs()
             + (0..n)
                 .map(|j| (a[j] * z[self.force(h, j)]).abs())
                 .sum::<f64>()
@@ -501,6 +510,22 @@ pub fn steady_state_near(
     settings: SteadySettings,
     near: Option<&[&[f64]]>,
 ) -> Result<SteadyState, SteadyError> {
+    steady_state_with_offsets(contact, terms, sliding, settings, near, &[])
+}
+
+/// [`steady_state_near`] where half cycle h sees the gap g + `offsets[h]` (mm, one per point;
+/// an empty list: no offset) instead of the shape g alone: the thermal distortion of the
+/// temperature at each half's start. A common part of the offsets is absorbed by the shape
+/// (the state's `shape` is g, what the offsets are added to); only their difference changes
+/// the pressures.
+pub fn steady_state_with_offsets(
+    contact: &CondensedContact,
+    terms: &[(f64, f64)],
+    sliding: SteadySliding,
+    settings: SteadySettings,
+    near: Option<&[&[f64]]>,
+    offsets: &[Vec<f64>],
+) -> Result<SteadyState, SteadyError> {
     let (n, m) = (contact.len(), contact.rigid_modes.len());
     if m == 0 {
         return Err(SteadyError::NoRigidMotion);
@@ -508,14 +533,23 @@ pub fn steady_state_near(
     if terms.iter().all(|t| t.0 == 0.0) {
         return Err(SteadyError::NoWear);
     }
-    if sliding == SteadySliding::Reciprocating && contact.friction == 0.0 {
-        return Ok(frictionless_reciprocating(contact, terms, settings, near));
+    // Without friction the halves are one problem, unless their offsets differ.
+    let same_offsets = offsets.windows(2).all(|w| w[0] == w[1]);
+    if sliding == SteadySliding::Reciprocating && contact.friction == 0.0 && same_offsets {
+        let mut state = frictionless_reciprocating(contact, terms, settings, near);
+        if let Some(offset) = offsets.first() {
+            // Solved without it: the shape that sees g + offset is g − offset.
+            for (g, o) in state.shape.iter_mut().zip(offset) {
+                *g -= o;
+            }
+        }
+        return Ok(state);
     }
     let signs: Vec<f64> = match sliding {
         SteadySliding::Reciprocating => vec![1.0, -1.0],
         SteadySliding::Monotonic(direction) => vec![direction.sign()],
     };
-    let system = System::new(contact, &signs, 1.0);
+    let system = System::new(contact, &signs, 1.0).with_offset(offsets);
     let start = system.uniform_start();
     let mut used = 0;
     if let Some(near) = near.filter(|p| p.len() == system.halves && p.iter().all(|q| q.len() == n))
@@ -542,6 +576,8 @@ pub fn steady_state_near(
     if status != SteadyStatus::Solved {
         let retry =
             continuation::from_frictionless(&system, contact, sliding, &signs, terms, settings);
+        // (The continuation's systems carry the offsets; its mirror-image start has none,
+        // which only makes it a worse start.)
         used += retry.iterations;
         if retry.status == SteadyStatus::Solved {
             (z, status) = (retry.z, retry.status);

@@ -414,3 +414,46 @@ impl HeatRun<'_> {
         }
     }
 }
+
+impl ThermalModel {
+    /// The periodic temperature of reciprocating sliding whose half cycles have the steady
+    /// pressures `p_plus` and `p_minus` (MPa): the modal coordinates at the start of a '+'
+    /// half (the end of a '−' one) and at the start of a '−' half. Per mode, with the
+    /// half-period map a ↦ e a + g_d, a₊ = (e g₊ + g₋)/(1 − e²) and a₋ = e a₊ + g₊. Under
+    /// monotonic sliding both are the stationary state under `p_plus`. None if some mode
+    /// keeps its heat (λ = 0: no edge or face lets the heat out), when no periodic state
+    /// exists.
+    pub fn periodic_state(&self, p_plus: &[f64], p_minus: &[f64]) -> Option<[Vec<f64>; 2]> {
+        if self.rates.contains(&0.0) {
+            return None;
+        }
+        let r = self.rates.len();
+        let mut plus = vec![0.0; r];
+        let mut minus = vec![0.0; r];
+        self.modal_flux(p_plus, &mut plus);
+        match self.sliding {
+            Sliding::Reciprocating { amplitude, omega } => {
+                self.modal_flux(p_minus, &mut minus);
+                let speed = amplitude * omega;
+                let mut start_plus = vec![0.0; r];
+                let mut start_minus = vec![0.0; r];
+                for j in 0..r {
+                    let (e, sine, constant) = self.half_period_gains[j];
+                    let source = constant * self.source_modal[j];
+                    let g_plus = sine * speed * plus[j] + source;
+                    let g_minus = sine * speed * minus[j] + source;
+                    start_plus[j] = (e * g_plus + g_minus)
+                        / (-(-2.0 * self.rates[j] * self.sliding.half_period()).exp_m1());
+                    start_minus[j] = e * start_plus[j] + g_plus;
+                }
+                Some([start_plus, start_minus])
+            }
+            Sliding::Monotonic { speed, .. } => {
+                let a: Vec<f64> = (0..r)
+                    .map(|j| (speed * plus[j] + self.source_modal[j]) / self.rates[j])
+                    .collect();
+                Some([a.clone(), a])
+            }
+        }
+    }
+}

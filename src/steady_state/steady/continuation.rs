@@ -44,7 +44,11 @@ pub(super) fn from_frictionless(
     };
     let walk_to_friction = |retry: &mut Retry, mut z: Vec<f64>, mut active: Vec<Vec<bool>>| {
         let (status, iterations, reached) = walk(
-            |t, z, active| System::new(contact, signs, t).newton(terms, z, active, settings),
+            |t, z, active| {
+                System::new(contact, signs, t)
+                    .with_offset(&system.offset)
+                    .newton(terms, z, active, settings)
+            },
             &mut z,
             &mut active,
         );
@@ -60,8 +64,9 @@ pub(super) fn from_frictionless(
     };
     if let Some(pressures) = unworn_pressures(&frictionless, signs) {
         let (mut z, mut active) = system.start(&pressures);
-        let (status, iterations) =
-            System::new(contact, signs, 0.0).newton(terms, &mut z, &mut active, settings);
+        let (status, iterations) = System::new(contact, signs, 0.0)
+            .with_offset(&system.offset)
+            .newton(terms, &mut z, &mut active, settings);
         retry.iterations += iterations;
         if contact.friction == 0.0 || status != SteadyStatus::Solved {
             (retry.status, retry.z) = (status, z);

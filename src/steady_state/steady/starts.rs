@@ -58,7 +58,14 @@ impl<'a> System<'a> {
             } else {
                 1.0
             },
+            offset: Vec::new(),
         }
+    }
+
+    /// This system with half h seeing the gap offset `offsets[h]` (mm; empty: none).
+    pub(super) fn with_offset(mut self, offsets: &[Vec<f64>]) -> System<'a> {
+        self.offset = offsets.to_vec();
+        self
     }
 
     /// Uniform pressure F/A in every half, every point in contact (the monotonic optimum of a
