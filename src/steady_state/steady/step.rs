@@ -417,6 +417,7 @@ mod tests {
                 .collect(),
             load,
             reference_pressure: 1.0,
+            offset: Vec::new(),
         }
     }
 
