@@ -38,12 +38,15 @@ use crate::geometry::Point;
 use crate::material::ThermalMaterial;
 use crate::mesh::Mesh;
 use crate::quadrature::gauss_legendre;
-use faer::sparse::{SparseColMat, Triplet};
+use faer::sparse::SparseColMat;
 use faer::Mat;
 use std::collections::HashMap;
+use std::sync::{Arc, OnceLock};
 
+pub mod blocks;
 pub mod reduced;
 pub mod transient;
+use blocks::{assemble_pair, Block, BlockOperator, PairedMatrices};
 
 /// Errors of the conduction stage.
 #[derive(Debug, thiserror::Error)]
@@ -136,30 +139,31 @@ pub struct ConductionBody {
     free_of: Vec<usize>,
     /// Value of each full unknown where held (°C for vertex dofs, 0 for edge modes).
     held: Vec<Option<f64>>,
-    /// K over the free dofs (mW/K), both triangles.
-    pub conductivity: SparseColMat<usize, f64>,
-    /// C over the free dofs (mJ/K), both triangles.
-    pub capacity: SparseColMat<usize, f64>,
+    /// K (mW/K) over the full unknowns as blocks: the elements' and the convecting edges'.
+    conductivity_blocks: Vec<Block>,
+    /// C (mJ/K) over the full unknowns as the elements' blocks.
+    capacity_blocks: Vec<Block>,
     /// The constant sources over the free dofs (mW): ambient terms, minus K times the held
     /// temperatures.
     pub load: Vec<f64>,
-    /// K and f over the full unknowns, for the heat flowing in where temperatures are held.
-    full_conductivity: SparseColMat<usize, f64>,
+    /// The constant sources over the full unknowns, for the heat flowing in where
+    /// temperatures are held.
     full_load: Vec<f64>,
-    /// C over the full unknowns, for the heat stored.
-    full_capacity: SparseColMat<usize, f64>,
+    /// K and C over the free unknowns, assembled on first use.
+    free_matrices: OnceLock<PairedMatrices>,
     /// Edge pieces and faces with their conditions, for the heat they pass.
     edges: Vec<(EdgePiece, EdgeCondition)>,
     faces: Option<FaceConvection>,
     /// Whether some edge holds or convects or the faces convect: heat can leave.
     pub has_exit: bool,
+    n_free: usize,
 }
 
 /// Element matrices of one element: conductivity (with the face sink), capacity, and the
 /// face load per unit ambient temperature, over the element's modes.
 struct ElementMatrices {
-    conductivity: Mat<f64>,
-    capacity: Mat<f64>,
+    conductivity: Arc<Mat<f64>>,
+    capacity: Arc<Mat<f64>>,
     /// ∫ N_a dA · t (mm³), for the face load and the stored heat.
     volume: Vec<f64>,
 }
@@ -209,8 +213,8 @@ fn element_matrices(
         thickness * material.heat_capacity * mass[(a, b)]
     });
     ElementMatrices {
-        conductivity,
-        capacity,
+        conductivity: Arc::new(conductivity),
+        capacity: Arc::new(capacity),
         volume,
     }
 }
@@ -237,14 +241,6 @@ fn element_unknowns(
         .collect()
 }
 
-/// Symmetric sparse matrix (both triangles) from triplets; duplicates are summed.
-fn sparse(
-    n: usize,
-    triplets: &[Triplet<usize, usize, f64>],
-) -> Result<SparseColMat<usize, f64>, String> {
-    SparseColMat::try_new_from_triplets(n, n, triplets).map_err(|e| format!("{e:?}"))
-}
-
 /// y += A x for a sparse matrix stored in full (both triangles).
 pub fn add_product(a: &SparseColMat<usize, f64>, x: &[f64], y: &mut [f64]) {
     let col_ptr = a.symbolic().col_ptr();
@@ -268,8 +264,8 @@ impl ConductionBody {
         let dofs = DofMap::scalar(mesh, spec.p);
         let n_full = dofs.n_dofs() + mesh.elements.len() * basis.n_internal();
         let face = spec.faces.map_or(0.0, |f| f.coefficient);
-        let mut k_trip = Vec::new();
-        let mut c_trip = Vec::new();
+        let mut conductivity_blocks = Vec::with_capacity(mesh.elements.len());
+        let mut capacity_blocks = Vec::with_capacity(mesh.elements.len());
         let mut load = vec![0.0; n_full];
         let mut cache: HashMap<Vec<i64>, ElementMatrices> = HashMap::new();
         for element in 0..mesh.elements.len() {
@@ -289,18 +285,21 @@ impl ConductionBody {
                 element_matrices(mesh, element, &basis, &material, spec.thickness, face, nq)
             });
             let unknowns = element_unknowns(mesh, &dofs, &basis, element);
-            for (a, &(ga, sa)) in unknowns.iter().enumerate() {
-                for (b, &(gb, sb)) in unknowns.iter().enumerate() {
-                    let s = sa * sb;
-                    k_trip.push(Triplet::new(ga, gb, s * matrices.conductivity[(a, b)]));
-                    c_trip.push(Triplet::new(ga, gb, s * matrices.capacity[(a, b)]));
-                }
-                if let Some(f) = spec.faces {
+            if let Some(f) = spec.faces {
+                for (a, &(ga, sa)) in unknowns.iter().enumerate() {
                     // The face sink's ambient part: 2 h_f T∞ ∫ N_a dA = 2 h_f T∞ (t ∫N_a dA)/t.
                     load[ga] +=
                         sa * 2.0 * f.coefficient * f.ambient * matrices.volume[a] / spec.thickness;
                 }
             }
+            conductivity_blocks.push(Block {
+                unknowns: unknowns.clone(),
+                matrix: Arc::clone(&matrices.conductivity),
+            });
+            capacity_blocks.push(Block {
+                unknowns,
+                matrix: Arc::clone(&matrices.capacity),
+            });
         }
         let mut held: Vec<Option<f64>> = vec![None; n_full];
         for (piece, condition) in &spec.edges {
@@ -308,16 +307,15 @@ impl ConductionBody {
                 EdgeCondition::Convection {
                     coefficient,
                     ambient,
-                } => add_convection(
+                } => conductivity_blocks.push(convection_block(
                     mesh,
                     &dofs,
                     &basis,
                     piece,
                     spec.thickness * coefficient,
                     ambient,
-                    &mut k_trip,
                     &mut load,
-                ),
+                )),
                 EdgeCondition::Temperature(value) => {
                     let trace = basis.edge_trace(piece.local);
                     let unknowns = element_unknowns(mesh, &dofs, &basis, piece.element);
@@ -328,12 +326,6 @@ impl ConductionBody {
                 }
             }
         }
-        let numerical = |message: String| ConductionError::Numerical {
-            body: spec.name.clone(),
-            message,
-        };
-        let full_conductivity = sparse(n_full, &k_trip).map_err(numerical)?;
-        let full_capacity = sparse(n_full, &c_trip).map_err(numerical)?;
         let mut free_of = vec![usize::MAX; n_full];
         let mut n_free = 0;
         for (i, h) in held.iter().enumerate() {
@@ -342,20 +334,13 @@ impl ConductionBody {
                 n_free += 1;
             }
         }
-        let restrict = |triplets: &[Triplet<usize, usize, f64>]| {
-            let kept: Vec<_> = triplets
-                .iter()
-                .filter(|t| free_of[t.row] != usize::MAX && free_of[t.col] != usize::MAX)
-                .map(|t| Triplet::new(free_of[t.row], free_of[t.col], t.val))
-                .collect();
-            sparse(n_free, &kept)
-        };
-        let conductivity = restrict(&k_trip).map_err(numerical)?;
-        let capacity = restrict(&c_trip).map_err(numerical)?;
         // The held temperatures' lift: f_free − K_free,held T_held.
         let held_values: Vec<f64> = held.iter().map(|h| h.unwrap_or(0.0)).collect();
-        let mut lift = vec![0.0; n_full];
-        add_product(&full_conductivity, &held_values, &mut lift);
+        let full_k = BlockOperator {
+            size: n_full,
+            blocks: conductivity_blocks,
+        };
+        let lift = full_k.apply_vector(&held_values);
         let mut free_load = vec![0.0; n_free];
         for i in 0..n_full {
             if free_of[i] != usize::MAX {
@@ -375,21 +360,65 @@ impl ConductionBody {
             thickness: spec.thickness,
             free_of,
             held,
-            conductivity,
-            capacity,
+            conductivity_blocks: full_k.blocks,
+            capacity_blocks,
             load: free_load,
-            full_conductivity,
             full_load: load,
-            full_capacity,
+            free_matrices: OnceLock::new(),
             edges: spec.edges.clone(),
             faces: spec.faces,
             has_exit,
+            n_free,
         })
+    }
+
+    /// K and C over the free unknowns, numbered from `offset` in a system of `size`
+    /// unknowns, as blocks (held unknowns take sign 0, so that they drop out).
+    pub fn free_operators(&self, offset: usize, size: usize) -> (BlockOperator, BlockOperator) {
+        let restrict = |blocks: &[Block]| BlockOperator {
+            size,
+            blocks: blocks
+                .iter()
+                .map(|b| Block {
+                    unknowns: b
+                        .unknowns
+                        .iter()
+                        .map(|&(g, s)| match self.free_index(g) {
+                            Some(f) => (offset + f, s),
+                            None => (offset, 0.0),
+                        })
+                        .collect(),
+                    matrix: Arc::clone(&b.matrix),
+                })
+                .collect(),
+        };
+        (
+            restrict(&self.conductivity_blocks),
+            restrict(&self.capacity_blocks),
+        )
+    }
+
+    /// K and C over the free unknowns on their common pattern (assembled on first use).
+    pub fn matrices(&self) -> &PairedMatrices {
+        self.free_matrices.get_or_init(|| {
+            let (k, c) = self.free_operators(0, self.n_free);
+            assemble_pair(&k, &c)
+        })
+    }
+
+    /// K over the free unknowns (mW/K), both triangles, on the pattern it shares with C.
+    pub fn conductivity(&self) -> &SparseColMat<usize, f64> {
+        &self.matrices().first
+    }
+
+    /// C over the free unknowns (mJ/K), both triangles, on the pattern it shares with K.
+    pub fn capacity(&self) -> &SparseColMat<usize, f64> {
+        &self.matrices().second
     }
 
     /// Number of free unknowns.
     pub fn n_free(&self) -> usize {
-        self.conductivity.nrows()
+        self.n_free
     }
 
     /// Number of full unknowns (held ones included).
@@ -479,7 +508,7 @@ impl ConductionBody {
                 rhs[f] += flux[i];
             }
         }
-        let solved = transient::solve_spd(&self.conductivity, &rhs).ok_or_else(|| {
+        let solved = transient::solve_spd(self.conductivity(), &rhs).ok_or_else(|| {
             ConductionError::Numerical {
                 body: self.name.clone(),
                 message: "the conductivity matrix is singular: no edge holds a temperature or convects, so the heat cannot leave and there is no stationary temperature".into(),
@@ -502,10 +531,14 @@ impl ConductionBody {
     /// The heat (mJ) stored per kelvin of each full unknown: C 1, so that the heat stored in
     /// a field T relative to a uniform T_ref is (C 1)·(T − T_ref 1).
     pub fn heat_content_weights(&self) -> Vec<f64> {
-        let ones = self.uniform(1.0);
-        let mut c_ones = vec![0.0; self.n_full()];
-        add_product(&self.full_capacity, &ones, &mut c_ones);
-        c_ones
+        self.full_capacity().apply_vector(&self.uniform(1.0))
+    }
+
+    fn full_capacity(&self) -> BlockOperator {
+        BlockOperator {
+            size: self.n_full(),
+            blocks: self.capacity_blocks.clone(),
+        }
     }
 
     /// The element's modes as (full unknown, sign) pairs, in the basis's mode order.
@@ -547,10 +580,18 @@ impl ConductionBody {
             }
         }
         let faces = self.faces.map_or(0.0, |f| self.face_loss(field, f));
-        let mut residual = vec![0.0; self.n_full()];
-        add_product(&self.full_conductivity, field, &mut residual);
+        let full_conductivity = BlockOperator {
+            size: self.n_full(),
+            blocks: self.conductivity_blocks.clone(),
+        };
+        let mut residual = full_conductivity.apply_vector(field);
         if let Some(rate) = rate {
-            add_product(&self.full_capacity, rate, &mut residual);
+            for (r, c) in residual
+                .iter_mut()
+                .zip(self.full_capacity().apply_vector(rate))
+            {
+                *r += c;
+            }
         }
         let mut held_out = 0.0;
         for v in 0..self.mesh.vertices.len() {
@@ -632,44 +673,39 @@ pub fn piece_quadrature(mesh: &Mesh, piece: &EdgePiece, n: usize) -> Vec<(f64, f
         .collect()
 }
 
-/// Add an edge piece's convection t h ∫ N_a N_b ds to K and t h T∞ ∫ N_a ds to the load;
-/// `th` = t h (mW/(mm·K)).
-#[allow(clippy::too_many_arguments)]
-fn add_convection(
+/// An edge piece's convection t h ∫ N_a N_b ds as a block of K, with t h T∞ ∫ N_a ds added
+/// to `load`; `th` = t h (mW/(mm·K)).
+fn convection_block(
     mesh: &Mesh,
     dofs: &DofMap,
     basis: &QuadBasis,
     piece: &EdgePiece,
     th: f64,
     ambient: f64,
-    k_trip: &mut Vec<Triplet<usize, usize, f64>>,
     load: &mut [f64],
-) {
+) -> Block {
     let trace = basis.edge_trace(piece.local);
-    let unknowns = element_unknowns(mesh, dofs, basis, piece.element);
+    let element = element_unknowns(mesh, dofs, basis, piece.element);
     let n = trace.len();
-    let mut matrix = vec![0.0; n * n];
+    let mut matrix = Mat::<f64>::zeros(n, n);
     let mut vector = vec![0.0; n];
     for (tp, ds) in piece_quadrature(mesh, piece, basis.p + 2) {
         let (xi, eta) = Mesh::edge_reference_point(piece.local, tp);
         let tab = basis.tabulate(&[xi], &[eta]);
         for (a, &ma) in trace.iter().enumerate() {
-            let na = unknowns[ma].1 * tab.values[ma];
-            vector[a] += na * ds;
+            vector[a] += tab.values[ma] * ds;
             for (b, &mb) in trace.iter().enumerate() {
-                matrix[a * n + b] += na * unknowns[mb].1 * tab.values[mb] * ds;
+                matrix[(a, b)] += th * tab.values[ma] * tab.values[mb] * ds;
             }
         }
     }
-    for (a, &ma) in trace.iter().enumerate() {
-        load[unknowns[ma].0] += th * ambient * vector[a];
-        for (b, &mb) in trace.iter().enumerate() {
-            k_trip.push(Triplet::new(
-                unknowns[ma].0,
-                unknowns[mb].0,
-                th * matrix[a * n + b],
-            ));
-        }
+    let unknowns: Vec<(usize, f64)> = trace.iter().map(|&m| element[m]).collect();
+    for (a, &(g, s)) in unknowns.iter().enumerate() {
+        load[g] += s * th * ambient * vector[a];
+    }
+    Block {
+        unknowns,
+        matrix: Arc::new(matrix),
     }
 }
 

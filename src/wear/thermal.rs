@@ -79,12 +79,18 @@ pub struct Affine {
 impl Affine {
     /// The outputs at modal coordinates `a`.
     pub fn apply(&self, a: &[f64], out: &mut [f64]) {
-        for (i, o) in out.iter_mut().enumerate() {
-            let mut acc = self.offset[i];
-            for (j, aj) in a.iter().enumerate() {
-                acc += self.matrix[(i, j)] * aj;
+        out.copy_from_slice(&self.offset);
+        // Column by column: M is stored by columns, so each is one contiguous axpy.
+        for (j, &aj) in a.iter().enumerate() {
+            let column = self
+                .matrix
+                .col(j)
+                .try_as_col_major()
+                .expect("an owned matrix's columns are contiguous")
+                .as_slice();
+            for (o, m) in out.iter_mut().zip(column) {
+                *o += m * aj;
             }
-            *o = acc;
         }
     }
 

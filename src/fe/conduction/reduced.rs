@@ -37,10 +37,22 @@
 //! only approximation is the space, which the tests measure against the full model
 //! ([`super::transient`]) on the shipped and on refined meshes.
 
-use super::add_product;
-use super::transient::{combine, SpdFactor, SpdSymbolic};
+use super::blocks::{BlockOperator, PairedMatrices};
+use super::transient::{SpdFactor, SpdSymbolic};
 use faer::sparse::SparseColMat;
 use faer::{Mat, MatRef, Side};
+
+/// The heat problem's operators as the reduction needs them: K and C as blocks (for products
+/// with the basis) and as sparse matrices on one pattern (for the factorisations of K + σC).
+#[derive(Clone, Copy)]
+pub struct HeatOperators<'a> {
+    /// K (mW/K) as blocks.
+    pub conductivity: &'a BlockOperator,
+    /// C (mJ/K) as blocks.
+    pub capacity: &'a BlockOperator,
+    /// K and C assembled on their common pattern.
+    pub matrices: &'a PairedMatrices,
+}
 
 /// A new direction is kept when its squared C-norm after projection on the basis exceeds
 /// DROP times its own (a residual of 1e-5 of its size): the blocks of nearby shifts are
@@ -71,43 +83,15 @@ pub enum ReductionError {
     Eigen,
 }
 
-/// Vᵀ A (r × N) for a symmetric sparse A (N × N, both triangles stored) and V given as its
-/// transpose `vt` (r × N): column j of the result is Σ_k A_kj vt[:, k], a sum of contiguous
-/// columns, so the product runs at the speed of an axpy instead of scattering row by row.
-/// Since A is symmetric this is also (A V)ᵀ.
-pub fn transpose_times(a: &SparseColMat<usize, f64>, vt: MatRef<'_, f64>) -> Mat<f64> {
-    let mut out = Mat::<f64>::zeros(vt.nrows(), a.ncols());
-    let col_ptr = a.symbolic().col_ptr();
-    let row_idx = a.symbolic().row_idx();
-    let values = a.val();
-    let vt = vt.to_owned();
-    let r = vt.nrows();
-    for j in 0..a.ncols() {
-        let range = col_ptr[j]..col_ptr[j + 1];
-        let column = out
-            .col_mut(j)
-            .try_as_col_major_mut()
-            .expect("an owned matrix's columns are contiguous")
-            .as_slice_mut();
-        for (&k, &v) in row_idx[range.clone()].iter().zip(&values[range]) {
-            let source = vt
-                .col(k)
-                .try_as_col_major()
-                .expect("an owned matrix's columns are contiguous")
-                .as_slice();
-            for (o, s) in column[..r].iter_mut().zip(source) {
-                *o += v * s;
-            }
-        }
-    }
-    out
-}
-
 /// A basis kept C-orthonormal as blocks are added, with C times it (so that a new block's
 /// projection costs dense products only).
 struct Basis {
+    /// Room for every direction that may be added (allocated once: growing the matrices
+    /// block by block zeroed 200 MB of fresh pages on punch-b40-heat); the first `len`
+    /// columns are the basis.
     v: Mat<f64>,
     cv: Mat<f64>,
+    len: usize,
 }
 
 impl Basis {
@@ -116,16 +100,9 @@ impl Basis {
     /// the square root of round-off when they are nearly dependent), then the block's own
     /// Gram matrix is diagonalised and its directions whose norm left after projection is
     /// below √DROP of what they had are dropped.
-    fn add(
-        &mut self,
-        capacity: &SparseColMat<usize, f64>,
-        w: Mat<f64>,
-    ) -> Result<(), ReductionError> {
+    fn add(&mut self, capacity: &BlockOperator, w: Mat<f64>) -> Result<(), ReductionError> {
         let mut w = w;
-        let wt = w.transpose().to_owned();
-        let mut cw = transpose_times(capacity, wt.as_ref())
-            .transpose()
-            .to_owned();
+        let mut cw = capacity.apply(w.as_ref());
         // Unit C-norm columns, so that the drop is relative to each direction's own size.
         for c in 0..w.ncols() {
             let norm: f64 = (0..w.nrows())
@@ -142,11 +119,12 @@ impl Basis {
                 cw[(i, c)] *= inverse;
             }
         }
-        if self.v.ncols() > 0 {
+        if self.len > 0 {
+            let (v, cv) = (self.v.subcols(0, self.len), self.cv.subcols(0, self.len));
             for _ in 0..2 {
-                let h = self.cv.transpose() * &w;
-                w -= &self.v * &h;
-                cw -= &self.cv * &h;
+                let h = cv.transpose() * &w;
+                w -= v * &h;
+                cw -= cv * &h;
             }
         }
         let gram = w.transpose() * &cw;
@@ -162,16 +140,24 @@ impl Basis {
         let scale = Mat::from_fn(u.nrows(), kept.len(), |r, j| {
             u[(r, kept[j])] / s[kept[j]].sqrt()
         });
-        let (w, cw) = (&w * &scale, &cw * &scale);
-        let r = self.v.ncols();
-        let mut v = Mat::<f64>::zeros(w.nrows(), r + w.ncols());
-        let mut cv = Mat::<f64>::zeros(w.nrows(), r + w.ncols());
-        v.subcols_mut(0, r).copy_from(&self.v);
-        v.subcols_mut(r, w.ncols()).copy_from(&w);
-        cv.subcols_mut(0, r).copy_from(&self.cv);
-        cv.subcols_mut(r, w.ncols()).copy_from(&cw);
-        self.v = v;
-        self.cv = cv;
+        let added = kept.len();
+        faer::linalg::matmul::matmul(
+            self.v.subcols_mut(self.len, added),
+            faer::Accum::Replace,
+            &w,
+            &scale,
+            1.0,
+            faer::Par::Seq,
+        );
+        faer::linalg::matmul::matmul(
+            self.cv.subcols_mut(self.len, added),
+            faer::Accum::Replace,
+            &cw,
+            &scale,
+            1.0,
+            faer::Par::Seq,
+        );
+        self.len += added;
         Ok(())
     }
 }
@@ -180,33 +166,33 @@ impl Basis {
 /// K⁻¹CK⁻¹B at σ = 0. K + σC has one pattern for every σ (the union of K's and C's), so the
 /// symbolic factorisation is made once.
 fn krylov_basis(
-    conductivity: &SparseColMat<usize, f64>,
-    capacity: &SparseColMat<usize, f64>,
+    operators: HeatOperators<'_>,
     inputs: MatRef<'_, f64>,
     shifts: &[f64],
     extra: &[Vec<f64>],
 ) -> Result<Mat<f64>, ReductionError> {
-    let n = conductivity.nrows();
-    // Both on the union pattern (explicit zeros kept), so that K + σC is a sum of values.
-    let k_union = combine(1.0, conductivity, 0.0, capacity);
-    let c_union = combine(0.0, conductivity, 1.0, capacity);
-    let symbolic = SpdSymbolic::new(&k_union).ok_or(ReductionError::NotDefinite { shift: 0.0 })?;
+    let (k, c) = (&operators.matrices.first, &operators.matrices.second);
+    let n = k.nrows();
+    let symbolic = SpdSymbolic::new(k).ok_or(ReductionError::NotDefinite { shift: 0.0 })?;
+    let most = extra.len()
+        + inputs.ncols() * (shifts.len() + shifts.iter().filter(|&&s| s == 0.0).count());
     let mut basis = Basis {
-        v: Mat::zeros(n, 0),
-        cv: Mat::zeros(n, 0),
+        v: Mat::zeros(n, most),
+        cv: Mat::zeros(n, most),
+        len: 0,
     };
-    basis.add(capacity, Mat::from_fn(n, extra.len(), |i, j| extra[j][i]))?;
+    basis.add(
+        operators.capacity,
+        Mat::from_fn(n, extra.len(), |i, j| extra[j][i]),
+    )?;
     for &shift in shifts {
-        let values: Vec<f64> = k_union
+        let values: Vec<f64> = k
             .val()
             .iter()
-            .zip(c_union.val())
+            .zip(c.val())
             .map(|(k, c)| k + shift * c)
             .collect();
-        let matrix = SparseColMat::new(
-            k_union.symbolic().to_owned().expect("a valid pattern"),
-            values,
-        );
+        let matrix = SparseColMat::new(k.symbolic().to_owned().expect("a valid pattern"), values);
         let factor = SpdFactor::with_symbolic(&symbolic, &matrix)
             .ok_or(ReductionError::NotDefinite { shift })?;
         let mut w = inputs.to_owned();
@@ -215,18 +201,15 @@ fn krylov_basis(
             return Err(ReductionError::NotDefinite { shift });
         }
         if shift == 0.0 {
-            let wt = w.transpose().to_owned();
-            let mut second = transpose_times(capacity, wt.as_ref())
-                .transpose()
-                .to_owned();
+            let mut second = operators.capacity.apply(w.as_ref());
             factor.solve_in_place(&mut second);
-            basis.add(capacity, w)?;
-            basis.add(capacity, second)?;
+            basis.add(operators.capacity, w)?;
+            basis.add(operators.capacity, second)?;
         } else {
-            basis.add(capacity, w)?;
+            basis.add(operators.capacity, w)?;
         }
     }
-    Ok(basis.v)
+    Ok(basis.v.subcols(0, basis.len).to_owned())
 }
 
 impl ReducedModel {
@@ -234,16 +217,14 @@ impl ReducedModel {
     /// column) at `shifts` σ ≥ 0 (1/s), with the vectors `extra` added as they are (a
     /// constant field, the initial field). At σ = 0 the second moment K⁻¹ C K⁻¹ B is added too.
     pub fn new(
-        conductivity: &SparseColMat<usize, f64>,
-        capacity: &SparseColMat<usize, f64>,
+        operators: HeatOperators<'_>,
         inputs: MatRef<'_, f64>,
         shifts: &[f64],
         extra: &[Vec<f64>],
     ) -> Result<ReducedModel, ReductionError> {
         // V is C-orthonormal; the eigenvectors Q of VᵀKV make Φ = V Q K-orthogonal too.
-        let v = krylov_basis(conductivity, capacity, inputs, shifts, extra)?;
-        let vt = v.transpose().to_owned();
-        let reduced = transpose_times(conductivity, vt.as_ref()) * &v;
+        let v = krylov_basis(operators, inputs, shifts, extra)?;
+        let reduced = v.transpose() * operators.conductivity.apply(v.as_ref());
         let eigen = reduced
             .self_adjoint_eigen(Side::Lower)
             .map_err(|_| ReductionError::Eigen)?;
@@ -275,9 +256,8 @@ impl ReducedModel {
     }
 
     /// The modal coordinates of a field given over the free unknowns: Φᵀ C x.
-    pub fn coordinates(&self, capacity: &SparseColMat<usize, f64>, field: &[f64]) -> Vec<f64> {
-        let mut cx = vec![0.0; field.len()];
-        add_product(capacity, field, &mut cx);
+    pub fn coordinates(&self, capacity: &BlockOperator, field: &[f64]) -> Vec<f64> {
+        let cx = capacity.apply_vector(field);
         (0..self.len())
             .map(|j| (0..field.len()).map(|i| self.modes[(i, j)] * cx[i]).sum())
             .collect()

@@ -1,7 +1,7 @@
 //! Closed forms of heat conduction (Carslaw & Jaeger): the stationary slab, the semi-infinite
 //! body under a constant flux, the fin; each on the p-version elements.
 
-use super::reduced::{constant_gain, ReducedModel};
+use super::reduced::{constant_gain, HeatOperators, ReducedModel};
 use super::transient::Sdirk2;
 use super::*;
 use crate::geometry::{Block, EdgeShape};
@@ -259,7 +259,7 @@ fn semi_infinite_surface_rise() {
     let mut h: f64 = 1e-5;
     while time < 1.0 - 1e-12 {
         let step = h.min(1.0 - time);
-        let sdirk = Sdirk2::new(&body.conductivity, &body.capacity, step).unwrap();
+        let sdirk = Sdirk2::new(body.conductivity(), body.capacity(), step).unwrap();
         let source: Vec<f64> = body.load.iter().zip(&load).map(|(a, b)| a + b).collect();
         sdirk.advance(&mut t, time, |_| source.clone());
         time += step;
@@ -275,14 +275,13 @@ fn semi_infinite_surface_rise() {
     // flux, so the deviation from it starts at zero.
     let inputs = Mat::from_fn(load.len(), 1, |i, _| load[i]);
     let shifts = [0.0, 0.1, 1.0, 3.0, 10.0, 30.0, 100.0];
-    let model = ReducedModel::new(
-        &body.conductivity,
-        &body.capacity,
-        inputs.as_ref(),
-        &shifts,
-        &[],
-    )
-    .unwrap();
+    let (conductivity, capacity) = body.free_operators(0, body.n_free());
+    let operators = HeatOperators {
+        conductivity: &conductivity,
+        capacity: &capacity,
+        matrices: body.matrices(),
+    };
+    let model = ReducedModel::new(operators, inputs.as_ref(), &shifts, &[]).unwrap();
     let modal = model.project(inputs.as_ref());
     for time in [0.3, 1.0, 3.0] {
         let a: Vec<f64> = (0..model.len())

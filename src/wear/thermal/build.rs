@@ -4,7 +4,10 @@
 
 use super::{Affine, Sliding, ThermalInfo, ThermalModel, INTERFACE_CONDUCTANCE};
 use crate::basis::Space;
-use crate::conduction::reduced::{constant_gain, decay, half_sine_gain, ReducedModel};
+use crate::conduction::blocks::{assemble_pair, Block, BlockOperator, PairedMatrices};
+use crate::conduction::reduced::{
+    constant_gain, decay, half_sine_gain, HeatOperators, ReducedModel,
+};
 use crate::conduction::transient::Sdirk2;
 use crate::conduction::{ConductionBody, ConductionSpec, EdgePiece};
 use crate::contact::CondensedContact;
@@ -12,7 +15,6 @@ use crate::elasticity::ElasticBody;
 use crate::geometry::Point;
 use crate::heat_input::{HeatSettings, Partition};
 use crate::quadrature::gauss_lobatto;
-use faer::sparse::{SparseColMat, Triplet};
 use faer::Mat;
 use std::time::Instant;
 
@@ -107,10 +109,12 @@ impl FullOutput {
 /// The heat problem of a run in full: C Ṫ + K T = f₀ + F q(t) over both bodies' free
 /// unknowns (body 1's first), and its outputs.
 pub struct CoupledSystem {
-    /// K (mW/K), both triangles.
-    pub conductivity: SparseColMat<usize, f64>,
-    /// C (mJ/K), both triangles.
-    pub capacity: SparseColMat<usize, f64>,
+    /// K (mW/K) as blocks: both bodies' and the interface's.
+    pub conductivity: BlockOperator,
+    /// C (mJ/K) as blocks.
+    pub capacity: BlockOperator,
+    /// K and C assembled on their common pattern (both triangles).
+    pub matrices: PairedMatrices,
     /// f₀: the constant sources, mW.
     pub source: Vec<f64>,
     /// F: the load of a unit flux density (mW/mm²) at each contact point (unknowns × points).
@@ -188,12 +192,16 @@ impl CoupledSystem {
                 .map(|t| split(&thermal[b], &held[b], offsets[b], &scalar_trace(t)))
                 .collect()
         });
-        let mut k_trip = Vec::new();
-        let mut c_trip = Vec::new();
+        let mut conductivity = BlockOperator {
+            size,
+            blocks: Vec::new(),
+        };
+        let mut capacity = conductivity.clone();
         let mut source = vec![0.0; size];
         for b in 0..2 {
-            push_matrix(&thermal[b].conductivity, offsets[b], &mut k_trip);
-            push_matrix(&thermal[b].capacity, offsets[b], &mut c_trip);
+            let (k, c) = thermal[b].free_operators(offsets[b], size);
+            conductivity.blocks.extend(k.blocks);
+            capacity.blocks.extend(c.blocks);
             source[offsets[b]..offsets[b] + thermal[b].n_free()].copy_from_slice(&thermal[b].load);
         }
         let area = contact.areas();
@@ -221,17 +229,16 @@ impl CoupledSystem {
                 let mut e: Vec<(usize, f64)> = traces[0][i].free.clone();
                 e.extend(traces[1][i].free.iter().map(|&(g, c)| (g, -c)));
                 for &(a, ca) in &e {
-                    for &(bb, cb) in &e {
-                        k_trip.push(Triplet::new(a, bb, weight * ca * cb));
-                    }
                     source[a] -= weight * ca * (traces[0][i].held - traces[1][i].held);
                 }
+                let matrix = Mat::from_fn(e.len(), e.len(), |a, b| weight * e[a].1 * e[b].1);
+                conductivity.blocks.push(Block {
+                    unknowns: e.iter().map(|&(g, _)| (g, 1.0)).collect(),
+                    matrix: std::sync::Arc::new(matrix),
+                });
             }
         }
-        let conductivity = SparseColMat::try_new_from_triplets(size, size, &k_trip)
-            .expect("indices within the combined system");
-        let capacity = SparseColMat::try_new_from_triplets(size, size, &c_trip)
-            .expect("indices within the combined system");
+        let matrices = assemble_pair(&conductivity, &capacity);
         // A unit flux density at point i: w_i t on the receiving body's trace (body 1's under
         // perfect contact: the tie shares it).
         let share = match settings.partition {
@@ -291,6 +298,7 @@ impl CoupledSystem {
         Ok(CoupledSystem {
             conductivity,
             capacity,
+            matrices,
             source,
             flux,
             initial,
@@ -350,7 +358,7 @@ impl CoupledSystem {
 
     /// A stepper of the full model for steps of `step` s.
     pub fn stepper(&self, step: f64) -> Option<Sdirk2> {
-        Sdirk2::new(&self.conductivity, &self.capacity, step)
+        Sdirk2::new(&self.matrices.first, &self.matrices.second, step)
     }
 
     /// The shifts of the reduction for half periods (step units) of `half_period` s.
@@ -365,8 +373,7 @@ impl CoupledSystem {
         let n = self.flux.ncols();
         let size = self.len();
         let mut inputs = Mat::<f64>::zeros(size, n + 2);
-        let mut c_initial = vec![0.0; size];
-        crate::conduction::add_product(&self.capacity, &self.initial, &mut c_initial);
+        let c_initial = self.capacity.apply_vector(&self.initial);
         for i in 0..size {
             for j in 0..n {
                 inputs[(i, j)] = self.flux[(i, j)];
@@ -376,9 +383,13 @@ impl CoupledSystem {
         }
         let mut extra: Vec<Vec<f64>> = self.constants.to_vec();
         extra.push(self.initial.clone());
+        let operators = HeatOperators {
+            conductivity: &self.conductivity,
+            capacity: &self.capacity,
+            matrices: &self.matrices,
+        };
         Ok(ReducedModel::new(
-            &self.conductivity,
-            &self.capacity,
+            operators,
             inputs.as_ref(),
             shifts,
             &extra,
@@ -531,21 +542,6 @@ fn uncovered_pieces(
         }
     }
     pieces
-}
-
-fn push_matrix(
-    a: &SparseColMat<usize, f64>,
-    offset: usize,
-    out: &mut Vec<Triplet<usize, usize, f64>>,
-) {
-    let col_ptr = a.symbolic().col_ptr();
-    let row_idx = a.symbolic().row_idx();
-    for j in 0..a.ncols() {
-        let range = col_ptr[j]..col_ptr[j + 1];
-        for (&i, &v) in row_idx[range.clone()].iter().zip(&a.val()[range]) {
-            out.push(Triplet::new(offset + i, offset + j, v));
-        }
-    }
 }
 
 /// Where each body's largest temperature is looked for: the Lobatto points of its contact
