@@ -47,7 +47,10 @@ fn main() {
         t.elapsed().as_secs_f64()
     );
     // The full model's reference, at the end of every half period.
-    let substeps = 32;
+    let substeps: usize = std::env::var("SUBSTEPS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(32);
     let h = std::f64::consts::PI / omega;
     let stepper = system.stepper(h / substeps as f64).unwrap();
     let mut field = system.initial.clone();
@@ -107,6 +110,7 @@ fn main() {
         let setup = t.elapsed().as_secs_f64();
         let mut state = model.start();
         let (mut temperature_error, mut gap_error) = (0.0f64, 0.0f64);
+        let (mut late_t, mut late_g) = (0.0f64, 0.0f64);
         for (n, (t_ref, g_ref)) in reference.iter().enumerate() {
             let d = if n % 2 == 0 {
                 Direction::Plus
@@ -119,10 +123,14 @@ fn main() {
             for i in 0..t.len() {
                 temperature_error = temperature_error.max((t[i] - t_ref[i]).abs() / rise);
                 gap_error = gap_error.max((g[i] - g_ref[i]).abs() / gap_range);
+                if n >= 10 {
+                    late_t = late_t.max((t[i] - t_ref[i]).abs() / rise);
+                    late_g = late_g.max((g[i] - g_ref[i]).abs() / gap_range);
+                }
             }
         }
         println!(
-            "| {:?} | {} | {setup:.3} | {temperature_error:.2e} | {gap_error:.2e} |",
+            "| {:?} | {} | {setup:.3} | {temperature_error:.2e} | {gap_error:.2e} | {late_t:.2e}, {late_g:.2e} |",
             set,
             model.modes()
         );

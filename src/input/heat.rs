@@ -188,10 +188,14 @@ impl Problem {
             Some(PartitionSpec::Named(n)) if n == "perfect" => Partition::Perfect,
             Some(PartitionSpec::Fraction(f)) if (0.0..=1.0).contains(f) => Partition::Fraction(*f),
             Some(other) => {
+                let got = match other {
+                    PartitionSpec::Named(n) => format!("\"{n}\""),
+                    PartitionSpec::Fraction(f) => f.to_string(),
+                };
                 return Err(self.error(
                     "heat.partition",
-                    format!("must be \"perfect\" or the fraction of the frictional heat that enters body 1, from 0 to 1; got {other:?}"),
-                ))
+                    format!("must be \"perfect\" or the fraction of the frictional heat that enters body 1, from 0 to 1; got {got}"),
+                ));
             }
         };
         let b1 = self.body_index(&contact.body).map_err(|e| ProblemError {

@@ -81,3 +81,47 @@ pub fn summary(info: &ThermalInfo, thermal: &ThermalHistory) -> Value {
         "next_thermal_gap": numbers(&thermal.next_thermal_gap),
     })
 }
+
+/// Temperature (°C) above which the run warns that the materials' properties, taken as
+/// constant, have changed: steels lose a tenth of their conductivity by 300 °C, and polymer
+/// composites soften far below it.
+pub const PROPERTY_TEMPERATURE: f64 = 300.0;
+
+/// What the heat of a run says beyond its numbers: heat that cannot leave, heat crossing
+/// between points that are not in contact, temperatures beyond constant properties.
+pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<String> {
+    let (Some(info), Some(_)) = (&run.heat, &run.history.thermal) else {
+        return Vec::new();
+    };
+    let file = &problem.file;
+    let mut warnings = Vec::new();
+    if !info.has_exit {
+        warnings.push(format!("warning: {file}: heat: the heat cannot leave the bodies (every edge is insulated and the faces do not convect), so their temperature rises without end: the temperatures and the thermal distortion are those of bodies that keep all the frictional heat, and `wearfem steady` has no steady state to give"));
+    }
+    let h = &run.history;
+    if info.interface_conductance > 0.0 && !h.p_plus.is_empty() {
+        let x = &run.contact.points.x;
+        let apart: Vec<usize> = (0..x.len())
+            .filter(|&i| h.p_plus[i] <= 0.0 && h.p_minus.get(i).is_none_or(|&p| p <= 0.0))
+            .collect();
+        if let (Some(&first), Some(&last)) = (apart.first(), apart.last()) {
+            warnings.push(format!(
+                "warning: {file}: heat: perfect thermal contact ties every contact point to its partner, and {} of the {} points carry no pressure in the last cycle (x = {:.3} … {:.3} mm): heat crosses there as if they touched; name a contact edge no wider than the contact, or give heat.partition a fraction",
+                apart.len(),
+                x.len(),
+                x[first][0],
+                x[last][0]
+            ));
+        }
+    }
+    let hottest = h
+        .steps
+        .iter()
+        .filter_map(|s| s.max_temperature)
+        .flatten()
+        .fold(f64::NEG_INFINITY, f64::max);
+    if hottest > PROPERTY_TEMPERATURE {
+        warnings.push(format!("warning: {file}: heat: the bodies reach {hottest:.0} °C, where the conductivity, heat capacity, expansion and moduli of most engineering materials differ from their room-temperature values, which the model holds constant"));
+    }
+    warnings
+}

@@ -474,6 +474,7 @@ pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<Stri
         &run.contact,
         &[&h.p_plus, &h.p_minus],
     ));
+    warnings.extend(super::heat::run_warnings(problem, run));
     warnings
 }
 

@@ -1,0 +1,175 @@
+//! Broken `[heat]` sections and thermal properties: from the valid punch-b40-heat, one break
+//! at a time; each gives one message naming the file and the key, and exit code 2. A problem
+//! whose heat cannot leave: `steady` refuses it, `run` warns.
+
+use std::process::Command;
+
+fn baseline() -> String {
+    wearfem::examples::example("punch-b40-heat")
+        .unwrap()
+        .to_string()
+}
+
+/// Write `text` to `<tag>.toml` in a fresh directory and run `wearfem <command> FILE <extra>`;
+/// returns (exit code, stdout, stderr, output directory).
+fn run_cli(
+    command: &str,
+    extra: &[&str],
+    text: &str,
+    tag: &str,
+) -> (i32, String, String, std::path::PathBuf) {
+    let dir = std::env::temp_dir().join(format!("wearfem-heat-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join(format!("{tag}.toml"));
+    std::fs::write(&file, text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_wearfem"))
+        .arg(command)
+        .arg(&file)
+        .args(extra)
+        .arg("--out")
+        .arg(dir.join("out"))
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).to_string(),
+        String::from_utf8_lossy(&out.stderr).to_string(),
+        dir.join("out"),
+    )
+}
+
+#[test]
+fn broken_heat_sections_name_their_key() {
+    let base = baseline();
+    let cases = [
+        // A material of a contact body without one of its thermal properties.
+        (
+            "conductivity = 50.0    # W/(m·K)\n",
+            "",
+            "materials.steel.conductivity",
+        ),
+        ("density = 846.0", "densty = 846.0", "densty"),
+        (
+            "conductivity = 50.0 ",
+            "conductivity = 0.0 ",
+            "materials.steel.conductivity",
+        ),
+        (
+            "conductivity = 2.0 ",
+            "conductivity = -2.0 ",
+            "materials.composite.conductivity",
+        ),
+        (
+            "specific_heat = 460.0",
+            "specific_heat = nan",
+            "materials.steel.specific_heat",
+        ),
+        (
+            "expansion = 1.2e-5",
+            "expansion = 12.0",
+            "materials.steel.expansion",
+        ),
+        (
+            "other_edges = { convection = 25.0, ambient = 20.0 }",
+            "other_edges = { convection = -25.0, ambient = 20.0 }",
+            "heat.other_edges.convection",
+        ),
+        (
+            "faces = { convection = 25.0, ambient = 20.0 }",
+            "faces = { temperature = 20.0 }",
+            "heat.faces",
+        ),
+        (
+            "edge = \"base\"\ntemperature",
+            "edge = \"bse\"\ntemperature",
+            "heat.edges[0].edge",
+        ),
+        (
+            "body = \"strip\"\nedge = \"base\"",
+            "body = \"plate\"\nedge = \"base\"",
+            "heat.edges[0].body",
+        ),
+        (
+            "temperature = 20.0             # °C, held",
+            "temperature = 20.0\nconvection = 5.0",
+            "heat.edges[0]",
+        ),
+        (
+            "temperature = 20.0             # °C, held",
+            "temperature = -300.0",
+            "heat.edges[0].temperature",
+        ),
+        (
+            "partition = \"perfect\"",
+            "partition = 1.5",
+            "heat.partition",
+        ),
+        (
+            "partition = \"perfect\"",
+            "partition = \"ideal\"",
+            "heat.partition",
+        ),
+        (
+            "reference_temperature = 20.0",
+            "reference_temperatur = 20.0",
+            "reference_temperatur",
+        ),
+        (
+            "kind = \"plane_stress\"",
+            "kind = \"plane_strain\"",
+            "heat.faces",
+        ),
+        (
+            "sliding = \"reciprocating\"",
+            "sliding = \"monotonic\"\nspeed = 10.0\nstep_time = 1.0",
+            "heat",
+        ),
+        // Body 1's contact edge exchanges heat with body 2: it takes no condition.
+        (
+            "body = \"strip\"\nedge = \"base\"",
+            "body = \"punch\"\nedge = \"contact\"",
+            "heat.edges[0].edge",
+        ),
+    ];
+    for (k, (from, to, key)) in cases.iter().enumerate() {
+        assert!(base.contains(from), "baseline lacks '{from}'");
+        let tag = format!("heat{k}");
+        let (code, _, err, _) =
+            run_cli("run", &["--steps", "2"], &base.replacen(from, to, 1), &tag);
+        assert_eq!(code, 2, "{key}: exit {code}: {err}");
+        assert!(
+            err.contains(key) && err.contains(&format!("{tag}.toml")),
+            "{key}: {err}"
+        );
+        assert!(!err.contains("panicked"), "{err}");
+        assert_eq!(err.trim().lines().count(), 1, "{key}: one line: {err}");
+    }
+}
+
+/// Every edge insulated and the faces closed: the heat cannot leave.
+fn sealed() -> String {
+    baseline()
+        .replace("other_edges = { convection = 25.0, ambient = 20.0 }   # W/(m²·K), °C: every outer edge not named\n", "")
+        .replace("faces = { convection = 25.0, ambient = 20.0 }         # both faces of the 10 mm plate\n", "")
+        .replace("[[heat.edges]]\nbody = \"strip\"\nedge = \"base\"\ntemperature = 20.0             # °C, held\n", "")
+}
+
+#[test]
+fn heat_that_cannot_leave_has_no_steady_state() {
+    let text = sealed();
+    assert!(!text.contains("other_edges") && !text.contains("[[heat.edges]]"));
+    let (code, _, err, out) = run_cli("steady", &[], &text, "sealed_steady");
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("heat") && err.contains("cannot leave"),
+        "{err}"
+    );
+    assert!(!out.join("summary.json").exists(), "nothing is written");
+    // A run integrates the transient all the same, and says what it is.
+    let (code, _, err, out) = run_cli("run", &["--steps", "4"], &text, "sealed_run");
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("cannot leave"), "{err}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["heat"]["heat_can_leave"], false);
+}
