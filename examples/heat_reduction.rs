@@ -117,7 +117,7 @@ fn main() {
             } else {
                 Direction::Minus
             };
-            model.advance(&mut state, &pressures[n % 2], d, 1);
+            model.advance(&mut state, &pressures[n % 2], d, 1, n % 2 == 0);
             let t = model.contact_temperature[0].at(&state.a);
             let g = model.gap.at(&state.a);
             for i in 0..t.len() {

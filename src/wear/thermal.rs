@@ -193,17 +193,30 @@ pub struct ThermalInfo {
 }
 
 /// The temperature state of a run: modal coordinates and the last heat of each direction.
+///
+/// Under reciprocating sliding the heat is integrated in whole cycles of strictly alternating
+/// half periods (see the module docs): `cycle` is the temperature at the start of the
+/// current cycle (the start of a half period of the cycle's first direction), `a` the one
+/// the run stands at now: the cycle's start, or after its first step the start of a half
+/// period of the second direction.
 #[derive(Clone, Debug)]
 pub struct ThermalState {
-    /// Modal coordinates.
+    /// Modal coordinates of the temperature now.
     pub a: Vec<f64>,
+    /// Modal coordinates at the start of the current cycle.
+    cycle: Vec<f64>,
     /// Time heated so far, s.
     pub time: f64,
-    /// The modal load of one half period's flux amplitude per direction ('+', '−'), the
-    /// last one seen (None before any step of that direction).
-    last_flux: [Option<Vec<f64>>; 2],
-    /// Heat made by friction so far, mJ.
+    /// The half-period increment g_d of each direction's last heat ('+', '−'; see
+    /// [`ThermalModel::half_period_increment`]); None before any step of that direction.
+    last_increment: [Option<Vec<f64>>; 2],
+    /// Heat made by friction so far, mJ, and at the start of the current cycle.
     pub generated: f64,
+    cycle_generated: f64,
+    /// The time at the start of the current cycle, s.
+    cycle_time: f64,
+    /// The heat of one half period of each direction's last pressure, mJ.
+    last_heat: [f64; 2],
     scratch: Vec<f64>,
 }
 
@@ -212,9 +225,13 @@ impl ThermalModel {
     pub fn start(&self) -> ThermalState {
         ThermalState {
             a: self.initial.clone(),
+            cycle: self.initial.clone(),
             time: 0.0,
-            last_flux: [None, None],
+            last_increment: [None, None],
             generated: 0.0,
+            cycle_generated: 0.0,
+            cycle_time: 0.0,
+            last_heat: [0.0; 2],
             scratch: vec![0.0; self.rates.len()],
         }
     }
@@ -238,72 +255,143 @@ impl ThermalModel {
             if q == 0.0 {
                 continue;
             }
-            for (j, o) in out.iter_mut().enumerate() {
-                *o += self.flux_modal[(j, i)] * q;
+            let column = self
+                .flux_modal
+                .col(i)
+                .try_as_col_major()
+                .expect("an owned matrix's columns are contiguous")
+                .as_slice();
+            for (o, f) in out.iter_mut().zip(column) {
+                *o += f * q;
             }
         }
     }
 
-    /// Advance `state` over a step of `k` half periods (monotonic: step units) in
-    /// `direction`, with the frictional heat of `pressure` (MPa, one per contact point),
-    /// alternating with the other direction's last heat (see the module docs).
+    /// What one half period of reciprocating sliding at `pressure` adds to each modal
+    /// coordinate (a ↦ e a + g): the half-sine frictional heat and the constant sources.
+    fn half_period_increment(&self, pressure: &[f64], out: &mut [f64]) {
+        self.modal_flux(pressure, out);
+        let speed = match self.sliding {
+            Sliding::Reciprocating { amplitude, omega } => amplitude * omega,
+            Sliding::Monotonic { speed, .. } => speed,
+        };
+        for ((o, &(_, sine, constant)), s) in out
+            .iter_mut()
+            .zip(&self.half_period_gains)
+            .zip(&self.source_modal)
+        {
+            *o = sine * speed * *o + constant * s;
+        }
+    }
+
+    /// `halves` half periods alternating from `first` (increments g of
+    /// [`ThermalModel::half_period_increment`]) to `second`, from `from` into `to`: m pairs
+    /// (first, second), a ↦ e²a + (e g₁ + g₂) summed geometrically, then one more `first` if
+    /// `halves` is odd.
+    fn alternate(
+        &self,
+        from: &[f64],
+        first: &[f64],
+        second: &[f64],
+        halves: usize,
+        to: &mut [f64],
+    ) {
+        let h = self.sliding.half_period();
+        let pairs = halves / 2;
+        for j in 0..self.rates.len() {
+            let rate = self.rates[j];
+            let e = self.half_period_gains[j].0;
+            let mut a = from[j];
+            if pairs > 0 {
+                a = decay(rate, 2.0 * h * pairs as f64) * a
+                    + geometric_sum(rate, 2.0 * h, pairs) * (e * first[j] + second[j]);
+            }
+            if halves % 2 == 1 {
+                a = e * a + first[j];
+            }
+            to[j] = a;
+        }
+    }
+
+    /// Advance `state` over a kept step of `k` half periods (monotonic: step units) in
+    /// `direction`, with the frictional heat of `pressure` (MPa, one per contact point);
+    /// `first_half` says whether the step is the first of its cycle.
+    ///
+    /// Reciprocating sliding: a cycle of two steps of k half periods each stands for k
+    /// periods of the process, 2k half periods alternating between the two directions. After
+    /// the cycle's first step the state moves to the start of a half period of the second
+    /// direction: k alternating half periods from the cycle's start (k − 1 if k is even, so
+    /// that they end with the first direction), the second direction's halves at its last
+    /// pressure. After the second step the cycle is done again from its start, with both
+    /// directions' pressures of this cycle, and the next cycle starts there.
     pub fn advance(
         &self,
         state: &mut ThermalState,
         pressure: &[f64],
         direction: Direction,
         k: usize,
+        first_half: bool,
     ) {
         let slot = usize::from(direction == Direction::Minus);
-        let mut flux = std::mem::take(&mut state.scratch);
-        self.modal_flux(pressure, &mut flux);
         let heat: f64 = pressure
             .iter()
             .zip(&self.area)
             .map(|(p, a)| self.friction * p.max(0.0) * a)
             .sum();
         let h = self.sliding.half_period();
+        let mut increment = std::mem::take(&mut state.scratch);
         match self.sliding {
-            Sliding::Reciprocating { amplitude, omega } => {
-                state.generated += heat * 2.0 * amplitude * k as f64;
-                let speed = amplitude * omega;
-                let cycles = k / 2;
-                let other = state.last_flux[1 - slot].as_deref().unwrap_or(&flux);
-                for (j, a) in state.a.iter_mut().enumerate() {
-                    let (e, sine, constant) = self.half_period_gains[j];
-                    let source = constant * self.source_modal[j];
-                    let g_own = sine * speed * flux[j] + source;
-                    let g_other = sine * speed * other[j] + source;
-                    if k % 2 == 1 {
-                        *a = e * *a + g_own;
-                    }
-                    // m cycles (other, own): a ← e²a + (e g_other + g_own), summed.
-                    if cycles > 0 {
-                        let rate = self.rates[j];
-                        *a = decay(rate, 2.0 * h * cycles as f64) * *a
-                            + geometric_sum(rate, 2.0 * h, cycles) * (e * g_other + g_own);
-                    }
+            Sliding::Reciprocating { amplitude, .. } => {
+                self.half_period_increment(pressure, &mut increment);
+                let other = state.last_increment[1 - slot]
+                    .clone()
+                    .unwrap_or_else(|| increment.clone());
+                let half_heat = heat * 2.0 * amplitude;
+                if first_half {
+                    let halves = if k % 2 == 1 { k } else { k - 1 };
+                    let mut to = std::mem::take(&mut state.a);
+                    self.alternate(&state.cycle, &increment, &other, halves, &mut to);
+                    state.a = to;
+                    let others = (halves / 2) as f64;
+                    state.generated = state.cycle_generated
+                        + half_heat * (halves - halves / 2) as f64
+                        + state.last_heat[1 - slot] * others;
+                    state.time = state.cycle_time + h * halves as f64;
+                } else {
+                    let mut to = std::mem::take(&mut state.a);
+                    self.alternate(&state.cycle, &other, &increment, 2 * k, &mut to);
+                    state.a = to;
+                    state.cycle.copy_from_slice(&state.a);
+                    state.cycle_generated += (half_heat + state.last_heat[1 - slot]) * k as f64;
+                    state.generated = state.cycle_generated;
+                    state.cycle_time += 2.0 * h * k as f64;
+                    state.time = state.cycle_time;
                 }
-                match &mut state.last_flux[slot] {
-                    Some(last) => last.copy_from_slice(&flux),
-                    none => *none = Some(flux.clone()),
+                state.last_heat[slot] = half_heat;
+                match &mut state.last_increment[slot] {
+                    Some(last) => last.copy_from_slice(&increment),
+                    none => *none = Some(increment.clone()),
                 }
             }
             Sliding::Monotonic { speed, step_time } => {
+                self.modal_flux(pressure, &mut increment);
                 let time = step_time * k as f64;
-                state.generated += heat * speed * time;
+                state.cycle_generated += heat * speed * time;
+                state.generated = state.cycle_generated;
                 for ((a, &rate), (f, s)) in state
                     .a
                     .iter_mut()
                     .zip(&self.rates)
-                    .zip(flux.iter().zip(&self.source_modal))
+                    .zip(increment.iter().zip(&self.source_modal))
                 {
                     *a = decay(rate, time) * *a + constant_gain(rate, time) * (speed * f + s);
                 }
+                state.cycle.copy_from_slice(&state.a);
+                state.cycle_time += time;
+                state.time = state.cycle_time;
             }
         }
-        state.time += h * k as f64;
-        state.scratch = flux;
+        state.scratch = increment;
     }
 
     /// The largest temperature on each body's boundary, °C.
@@ -336,6 +424,8 @@ pub(super) struct HeatRun<'a> {
     pub gap: Vec<f64>,
     /// The thermal gap at the start of the current cycle.
     cycle_start: Vec<f64>,
+    /// The thermal gap's change over the last complete cycle (mm).
+    pub cycle_change: Vec<f64>,
 }
 
 impl<'a> HeatRun<'a> {
@@ -347,6 +437,7 @@ impl<'a> HeatRun<'a> {
             model,
             state,
             cycle_start: gap.clone(),
+            cycle_change: vec![0.0; gap.len()],
             gap,
         }
     }
@@ -358,8 +449,10 @@ impl<'a> HeatRun<'a> {
         pressure: &[f64],
         direction: Direction,
         k: usize,
+        first_half: bool,
     ) -> (Vec<f64>, [f64; 2]) {
-        self.model.advance(&mut self.state, pressure, direction, k);
+        self.model
+            .advance(&mut self.state, pressure, direction, k, first_half);
         self.model.thermal_gap(&self.state, &mut self.gap);
         (
             self.model.probes.at(&self.state.a),
@@ -370,14 +463,16 @@ impl<'a> HeatRun<'a> {
     /// The largest change of the thermal gap over the cycle that ends now (mm), and start
     /// the next cycle.
     pub fn end_cycle(&mut self) -> f64 {
-        let change = self
-            .gap
-            .iter()
+        for ((c, a), b) in self
+            .cycle_change
+            .iter_mut()
+            .zip(&self.gap)
             .zip(&self.cycle_start)
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0, f64::max);
+        {
+            *c = a - b;
+        }
         self.cycle_start.copy_from_slice(&self.gap);
-        change
+        self.cycle_change.iter().fold(0.0, |m, c| m.max(c.abs()))
     }
 }
 

@@ -75,6 +75,10 @@ pub(super) struct Workspace {
     /// kept step was solved with; empty without heat.
     pub thermal: Vec<f64>,
     pub solved_thermal: Vec<f64>,
+    /// With heat and the adaptive schedule: the last step's contact problem with the
+    /// end-of-step thermal gap, for the split's error estimate.
+    pub split_trial: Vec<f64>,
+    pub split_solution: ContactSolution,
     pub solution: ContactSolution,
 }
 
@@ -102,6 +106,8 @@ impl Workspace {
             last_shape: vec![0.0; n],
             thermal: Vec::new(),
             solved_thermal: Vec::new(),
+            split_trial: vec![0.0; n],
+            split_solution: ContactSolution::default(),
             solution: ContactSolution::default(),
         }
     }

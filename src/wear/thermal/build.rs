@@ -141,6 +141,9 @@ pub struct CoupledSystem {
     peclet: [f64; 2],
     /// Contact areas w_i t, mm².
     area: Vec<f64>,
+    /// The two bodies' conduction operators, and where each one's free unknowns start.
+    bodies: [ConductionBody; 2],
+    offsets: [usize; 2],
 }
 
 /// A trace over one body's full unknowns as (combined free index, coefficient) pairs and the
@@ -312,7 +315,32 @@ impl CoupledSystem {
             conductance,
             peclet,
             area,
+            bodies: thermal,
+            offsets,
         })
+    }
+
+    /// The heat leaving both bodies (mW) at `field` (combined free unknowns, °C): through
+    /// convecting edges and faces and held edges ([`ConductionBody::heat_out`]), `rate` being
+    /// dT/dt (K/s) for a transient. Heat crossing between the bodies is internal.
+    pub fn heat_out(&self, field: &[f64], rate: Option<&[f64]>) -> f64 {
+        (0..2)
+            .map(|b| {
+                let body = &self.bodies[b];
+                let range = self.offsets[b]..self.offsets[b] + body.n_free();
+                let full = body.expand(&field[range.clone()]);
+                // A rate is zero at held unknowns.
+                let rate = rate.map(|r| {
+                    let mut full = body.expand(&r[range]);
+                    let held = body.expand(&vec![0.0; body.n_free()]);
+                    for (f, h) in full.iter_mut().zip(held) {
+                        *f -= h;
+                    }
+                    full
+                });
+                body.heat_out(&full, rate.as_deref()).total()
+            })
+            .sum()
     }
 
     /// Number of unknowns.
