@@ -371,9 +371,8 @@ impl WearIntegrator {
         direction: Direction,
         count: &mut SolveCount,
     ) -> f64 {
-        let n = ws.trial.len();
-        for i in 0..n {
-            ws.split_trial[i] = ws.trial[i] + 0.25 * cycle_change[i];
+        for ((s, t), c) in ws.split_trial.iter_mut().zip(&ws.trial).zip(cycle_change) {
+            *s = t + 0.25 * c;
         }
         count.track(solver.solve_pressures_into(
             &ws.split_trial,
