@@ -232,3 +232,113 @@ fn schedules_agree_with_single_half_periods() {
     );
     assert!(p < 0.01 && t < 0.01, "{p} {t}");
 }
+
+#[test]
+fn heat_balance_in_a_transient_and_in_the_steady_state() {
+    use wearfem::complementarity::{ContactSolver, Direction, Method};
+    use wearfem::contact::CondensedContact;
+    use wearfem::wear::thermal::{CoupledSystem, Sliding, ThermalBodies, ThermalModel};
+    // Energy (the bounds, 0.5 %): in a transient, the heat stored plus the heat
+    // lost through held and convecting edges and the faces equals the frictional heat made;
+    // in the periodic steady state what a period makes leaves. The full model is stepped by
+    // SDIRK2 (32 steps a half period) with the losses integrated by the trapezoidal rule,
+    // both second order: the balance closes to about 1e-4 (docs/validation.md).
+    let problem = heat_problem(&[]);
+    let settings = problem.heat_settings().unwrap().unwrap();
+    let (contact, body1, body2) = CondensedContact::build(&problem).unwrap();
+    let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
+    let pressures: Vec<Vec<f64>> = [Direction::Plus, Direction::Minus]
+        .iter()
+        .map(|&d| solver.solve(&contact.points.initial_gap, d).0.pressure)
+        .collect();
+    let (amplitude, omega, mu) = (1.5, 10.0, contact.friction);
+    let input = ThermalBodies {
+        elastic: [&body1, &body2],
+        contact: &contact,
+        settings: &settings,
+        space: problem.discretisation.space,
+        sliding: Sliding::Reciprocating { amplitude, omega },
+        probes: vec![],
+    };
+    let system = CoupledSystem::new(&input).unwrap();
+    let area = contact.areas();
+    let half_heat = |p: &[f64]| -> f64 {
+        p.iter().zip(&area).map(|(p, a)| mu * p.max(0.0) * 2.0 * amplitude * a).sum()
+    };
+    let stored = |t: &[f64]| system.stored[0].at(t)[0] + system.stored[1].at(t)[0];
+    let substeps = 32;
+    let h = std::f64::consts::PI / omega;
+    let dt = h / substeps as f64;
+    let stepper = system.stepper(dt).unwrap();
+    let mut field = system.initial.clone();
+    let start = stored(&field);
+    let (mut generated, mut lost) = (0.0, 0.0);
+    let halves = 10;
+    for n in 0..halves {
+        let p = &pressures[n % 2];
+        generated += half_heat(p);
+        let amplitudes: Vec<f64> = p.iter().map(|p| mu * p.max(0.0) * amplitude * omega).collect();
+        let mut load = vec![0.0; system.len()];
+        for (j, &q) in amplitudes.iter().enumerate() {
+            for (i, l) in load.iter_mut().enumerate() {
+                *l += system.flux[(i, j)] * q;
+            }
+        }
+        for step in 0..substeps {
+            let before = field.clone();
+            stepper.advance(&mut field, step as f64 * dt, |tau| {
+                let s = (omega * tau).sin();
+                system.source.iter().zip(&load).map(|(f, l)| f + l * s).collect()
+            });
+            // The losses are linear in T: the trapezoid is their value at the mean field,
+            // with the held edges' C Ṫ from the step's change.
+            let mean: Vec<f64> = before.iter().zip(&field).map(|(a, b)| 0.5 * (a + b)).collect();
+            let rate: Vec<f64> = before.iter().zip(&field).map(|(a, b)| (b - a) / dt).collect();
+            lost += system.heat_out(&mean, Some(&rate)) * dt;
+        }
+    }
+    let gained = stored(&field) - start;
+    let balance = (gained + lost - generated).abs() / generated;
+    eprintln!(
+        "transient: made {generated:.4e} mJ, stored {gained:.4e}, lost {lost:.4e}: balance {balance:.2e}"
+    );
+    assert!(balance < 5e-3, "{balance}");
+    // The reduced model the runs use stores the same heat.
+    let model = ThermalModel::from_system(
+        &system,
+        &system.shifts(h),
+        &input,
+        std::time::Instant::now(),
+    )
+    .unwrap();
+    let mut state = model.start();
+    for n in 0..halves {
+        let d = if n % 2 == 0 { Direction::Plus } else { Direction::Minus };
+        model.advance(&mut state, &pressures[n % 2], d, 1, n % 2 == 0);
+    }
+    let reduced = model.stored_heat(&state);
+    eprintln!("reduced model stores {reduced:.4e} mJ, made {:.4e}", state.generated);
+    assert!((reduced - gained).abs() < 5e-3 * gained, "{reduced} vs {gained}");
+    assert!((state.generated - generated).abs() < 1e-12 * generated);
+    // Steady: the period's mean field solves K T̄ = f₀ + F q̄ with the mean flux density
+    // q̄ = μ (p⁺ + p⁻) u₀ / h (a period makes μ p 2u₀ per unit area in each half), and what
+    // leaves at T̄ is what a period makes, per unit time.
+    let (steady, ..) = driver::steady_with_heat(&problem).unwrap();
+    let mean_flux: Vec<f64> = steady
+        .p_plus
+        .iter()
+        .zip(&steady.p_minus)
+        .map(|(a, b)| mu * (a + b) * amplitude / h)
+        .collect();
+    let mut rhs = system.source.clone();
+    for (j, &q) in mean_flux.iter().enumerate() {
+        for (i, r) in rhs.iter_mut().enumerate() {
+            *r += system.flux[(i, j)] * q;
+        }
+    }
+    let mean = wearfem::conduction::transient::solve_spd(&system.matrices.first, &rhs).unwrap();
+    let made: f64 = mean_flux.iter().zip(&area).map(|(q, a)| q * a).sum();
+    let out = system.heat_out(&mean, None);
+    eprintln!("steady: made {made:.4e} mW, lost {out:.4e} mW");
+    assert!((out - made).abs() < 5e-3 * made, "{out} vs {made}");
+}
