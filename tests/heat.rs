@@ -263,7 +263,10 @@ fn heat_balance_in_a_transient_and_in_the_steady_state() {
     let system = CoupledSystem::new(&input).unwrap();
     let area = contact.areas();
     let half_heat = |p: &[f64]| -> f64 {
-        p.iter().zip(&area).map(|(p, a)| mu * p.max(0.0) * 2.0 * amplitude * a).sum()
+        p.iter()
+            .zip(&area)
+            .map(|(p, a)| mu * p.max(0.0) * 2.0 * amplitude * a)
+            .sum()
     };
     let stored = |t: &[f64]| system.stored[0].at(t)[0] + system.stored[1].at(t)[0];
     let substeps = 32;
@@ -277,7 +280,10 @@ fn heat_balance_in_a_transient_and_in_the_steady_state() {
     for n in 0..halves {
         let p = &pressures[n % 2];
         generated += half_heat(p);
-        let amplitudes: Vec<f64> = p.iter().map(|p| mu * p.max(0.0) * amplitude * omega).collect();
+        let amplitudes: Vec<f64> = p
+            .iter()
+            .map(|p| mu * p.max(0.0) * amplitude * omega)
+            .collect();
         let mut load = vec![0.0; system.len()];
         for (j, &q) in amplitudes.iter().enumerate() {
             for (i, l) in load.iter_mut().enumerate() {
@@ -288,12 +294,25 @@ fn heat_balance_in_a_transient_and_in_the_steady_state() {
             let before = field.clone();
             stepper.advance(&mut field, step as f64 * dt, |tau| {
                 let s = (omega * tau).sin();
-                system.source.iter().zip(&load).map(|(f, l)| f + l * s).collect()
+                system
+                    .source
+                    .iter()
+                    .zip(&load)
+                    .map(|(f, l)| f + l * s)
+                    .collect()
             });
             // The losses are linear in T: the trapezoid is their value at the mean field,
             // with the held edges' C Ṫ from the step's change.
-            let mean: Vec<f64> = before.iter().zip(&field).map(|(a, b)| 0.5 * (a + b)).collect();
-            let rate: Vec<f64> = before.iter().zip(&field).map(|(a, b)| (b - a) / dt).collect();
+            let mean: Vec<f64> = before
+                .iter()
+                .zip(&field)
+                .map(|(a, b)| 0.5 * (a + b))
+                .collect();
+            let rate: Vec<f64> = before
+                .iter()
+                .zip(&field)
+                .map(|(a, b)| (b - a) / dt)
+                .collect();
             lost += system.heat_out(&mean, Some(&rate)) * dt;
         }
     }
@@ -313,12 +332,22 @@ fn heat_balance_in_a_transient_and_in_the_steady_state() {
     .unwrap();
     let mut state = model.start();
     for n in 0..halves {
-        let d = if n % 2 == 0 { Direction::Plus } else { Direction::Minus };
+        let d = if n % 2 == 0 {
+            Direction::Plus
+        } else {
+            Direction::Minus
+        };
         model.advance(&mut state, &pressures[n % 2], d, 1, n % 2 == 0);
     }
     let reduced = model.stored_heat(&state);
-    eprintln!("reduced model stores {reduced:.4e} mJ, made {:.4e}", state.generated);
-    assert!((reduced - gained).abs() < 5e-3 * gained, "{reduced} vs {gained}");
+    eprintln!(
+        "reduced model stores {reduced:.4e} mJ, made {:.4e}",
+        state.generated
+    );
+    assert!(
+        (reduced - gained).abs() < 5e-3 * gained,
+        "{reduced} vs {gained}"
+    );
     assert!((state.generated - generated).abs() < 1e-12 * generated);
     // Steady: the period's mean field solves K T̄ = f₀ + F q̄ with the mean flux density
     // q̄ = μ (p⁺ + p⁻) u₀ / h (a period makes μ p 2u₀ per unit area in each half), and what

@@ -58,7 +58,7 @@ pub struct HeatOperators<'a> {
 /// DROP times its own (a residual of 1e-5 of its size): the blocks of nearby shifts are
 /// nearly parallel, and what is left of them beyond that changes no output by more than the
 /// reduction's own error (docs/convergence.md).
-const DROP: f64 = 1e-10;
+const DROP: f64 = 1e-6;
 
 /// The modes of the reduced heat problem.
 #[derive(Clone, Debug)]
@@ -86,20 +86,30 @@ pub enum ReductionError {
 /// A basis kept C-orthonormal as blocks are added, with C times it (so that a new block's
 /// projection costs dense products only).
 struct Basis {
-    /// Room for every direction that may be added (allocated once: growing the matrices
-    /// block by block zeroed 200 MB of fresh pages on punch-b40-heat); the first `len`
-    /// columns are the basis.
-    v: Mat<f64>,
-    cv: Mat<f64>,
-    len: usize,
+    /// The basis, column by column (N values each): reserved for every direction that may
+    /// be added but filled only as directions are kept, so that memory is touched for the
+    /// kept ones only (growing a matrix block by block zeroed 200 MB of fresh pages on
+    /// punch-b40-heat; reserving it whole and zeroing it, most of a gigabyte at 32 contact
+    /// elements).
+    columns: Vec<f64>,
+    rows: usize,
 }
 
 impl Basis {
+    fn len(&self) -> usize {
+        self.columns.len() / self.rows.max(1)
+    }
+
+    fn view(&self) -> MatRef<'_, f64> {
+        MatRef::from_column_major_slice(&self.columns, self.rows, self.len())
+    }
+
     /// Add the directions of `w` (N × b) that the basis lacks: block classical Gram–Schmidt
     /// in the C inner product, twice (one pass leaves the new directions orthogonal only to
     /// the square root of round-off when they are nearly dependent), then the block's own
     /// Gram matrix is diagonalised and its directions whose norm left after projection is
-    /// below √DROP of what they had are dropped.
+    /// below √DROP of what they had are dropped. C times the basis is not kept (it doubled
+    /// the memory): each pass applies C to the block again, at a cost of the block's width.
     fn add(&mut self, capacity: &BlockOperator, w: Mat<f64>) -> Result<(), ReductionError> {
         let mut w = w;
         let mut cw = capacity.apply(w.as_ref());
@@ -116,17 +126,16 @@ impl Basis {
             };
             for i in 0..w.nrows() {
                 w[(i, c)] *= inverse;
-                cw[(i, c)] *= inverse;
             }
         }
-        if self.len > 0 {
-            let (v, cv) = (self.v.subcols(0, self.len), self.cv.subcols(0, self.len));
+        if self.len() > 0 {
             for _ in 0..2 {
-                let h = cv.transpose() * &w;
-                w -= v * &h;
-                cw -= cv * &h;
+                cw = capacity.apply(w.as_ref());
+                let h = self.view().transpose() * &cw;
+                w -= self.view() * &h;
             }
         }
+        cw = capacity.apply(w.as_ref());
         let gram = w.transpose() * &cw;
         let eigen = gram
             .self_adjoint_eigen(Side::Lower)
@@ -140,24 +149,10 @@ impl Basis {
         let scale = Mat::from_fn(u.nrows(), kept.len(), |r, j| {
             u[(r, kept[j])] / s[kept[j]].sqrt()
         });
-        let added = kept.len();
-        faer::linalg::matmul::matmul(
-            self.v.subcols_mut(self.len, added),
-            faer::Accum::Replace,
-            &w,
-            &scale,
-            1.0,
-            faer::Par::Seq,
-        );
-        faer::linalg::matmul::matmul(
-            self.cv.subcols_mut(self.len, added),
-            faer::Accum::Replace,
-            &cw,
-            &scale,
-            1.0,
-            faer::Par::Seq,
-        );
-        self.len += added;
+        let added = &w * &scale;
+        for c in 0..added.ncols() {
+            self.columns.extend(added.col(c).iter());
+        }
         Ok(())
     }
 }
@@ -177,9 +172,8 @@ fn krylov_basis(
     let most = extra.len()
         + inputs.ncols() * (shifts.len() + shifts.iter().filter(|&&s| s == 0.0).count());
     let mut basis = Basis {
-        v: Mat::zeros(n, most),
-        cv: Mat::zeros(n, most),
-        len: 0,
+        columns: Vec::with_capacity(n * most),
+        rows: n,
     };
     basis.add(
         operators.capacity,
@@ -209,7 +203,7 @@ fn krylov_basis(
             basis.add(operators.capacity, w)?;
         }
     }
-    Ok(basis.v.subcols(0, basis.len).to_owned())
+    Ok(basis.view().to_owned())
 }
 
 impl ReducedModel {
