@@ -58,7 +58,9 @@ fn geometric_sum(rate: f64, period: f64, m: usize) -> f64 {
 use faer::Mat;
 
 mod build;
-pub use build::{CoupledSystem, FullOutput, ThermalBodies, ThermalError, SHIFTS};
+mod outputs;
+pub use build::{CoupledSystem, ThermalBodies, ThermalError, SHIFTS};
+pub use outputs::{GapOutput, Output};
 
 /// Interface conductance of perfect thermal contact, relative to the largest conductance of
 /// the bodies at the scale of the contact points' spacing (k/w): h_c = 10⁶ k_max / w_min.

@@ -2,7 +2,8 @@
 //! the interface of perfect contact ([`CoupledSystem`]: the full model, which the tests step
 //! as the reference), and its reduction to the modes the run steps ([`ThermalModel`]).
 
-use super::{Affine, Sliding, ThermalInfo, ThermalModel, INTERFACE_CONDUCTANCE};
+use super::outputs::{thermal_gap, GapOutput, Output};
+use super::{Sliding, ThermalInfo, ThermalModel, INTERFACE_CONDUCTANCE};
 use crate::basis::Space;
 use crate::conduction::blocks::{assemble_pair, Block, BlockOperator, PairedMatrices};
 use crate::conduction::reduced::{
@@ -63,49 +64,6 @@ pub struct ThermalBodies<'a> {
 /// (the ripple within a half period, which the run samples at its ends).
 pub const SHIFTS: [f64; 6] = [1.0 / 1024.0, 1.0 / 64.0, 1.0 / 8.0, 1.0 / 2.0, 2.0, 8.0];
 
-/// An output of the full model: y = M T + c over the combined free unknowns.
-#[derive(Clone, Debug)]
-pub struct FullOutput {
-    /// M (outputs × unknowns).
-    pub matrix: Mat<f64>,
-    /// c (outputs).
-    pub offset: Vec<f64>,
-}
-
-impl FullOutput {
-    /// The outputs of field `t` (combined free unknowns).
-    pub fn at(&self, t: &[f64]) -> Vec<f64> {
-        (0..self.offset.len())
-            .map(|i| {
-                self.offset[i]
-                    + (0..t.len())
-                        .map(|j| self.matrix[(i, j)] * t[j])
-                        .sum::<f64>()
-            })
-            .collect()
-    }
-
-    fn reduce(&self, model: &ReducedModel) -> Affine {
-        Affine {
-            matrix: &self.matrix * &model.modes,
-            offset: self.offset.clone(),
-        }
-    }
-
-    fn of_traces(traces: &[Split], size: usize) -> FullOutput {
-        let mut matrix = Mat::<f64>::zeros(traces.len(), size);
-        for (i, s) in traces.iter().enumerate() {
-            for &(g, c) in &s.free {
-                matrix[(i, g)] += c;
-            }
-        }
-        FullOutput {
-            matrix,
-            offset: traces.iter().map(|s| s.held).collect(),
-        }
-    }
-}
-
 /// The heat problem of a run in full: C Ṫ + K T = f₀ + F q(t) over both bodies' free
 /// unknowns (body 1's first), and its outputs.
 pub struct CoupledSystem {
@@ -122,15 +80,15 @@ pub struct CoupledSystem {
     /// The initial field.
     pub initial: Vec<f64>,
     /// The thermal gap (mm) at each contact point.
-    pub gap: FullOutput,
+    pub gap: GapOutput,
     /// The temperature at each contact point of body 1 and at its partner on body 2.
-    pub contact_temperature: [FullOutput; 2],
+    pub contact_temperature: [Output; 2],
     /// The temperature at each probe.
-    pub probes: FullOutput,
+    pub probes: Output,
     /// The temperature at each body's boundary samples.
-    pub boundary: [FullOutput; 2],
+    pub boundary: [Output; 2],
     /// The heat stored in each body relative to the reference temperature, mJ.
-    pub stored: [FullOutput; 2],
+    pub stored: [Output; 2],
     /// Constant vectors of each body (1 on its free unknowns' uniform field).
     constants: [Vec<f64>; 2],
     /// Whether heat can leave.
@@ -274,8 +232,17 @@ impl CoupledSystem {
             Partition::Perfect => thermal[0].has_exit || thermal[1].has_exit,
             Partition::Fraction(_) => thermal[0].has_exit && thermal[1].has_exit,
         };
-        let gap = thermal_gap(input, &thermal, &held, offsets, size)?;
-        let contact_temperature = [0, 1].map(|b| FullOutput::of_traces(&traces[b], size));
+        let expansion: Vec<f64> = settings.materials.iter().map(|m| m.expansion).collect();
+        let gap = thermal_gap(
+            input.elastic,
+            &thermal,
+            contact,
+            offsets,
+            &expansion,
+            settings.reference,
+        )
+        .map_err(|(body, message)| ThermalError::Elastic { body, message })?;
+        let contact_temperature = [0, 1].map(|b| of_traces(&traces[b]));
         let mut probe_traces = Vec::new();
         for &x in &input.probes {
             let (element, xi, eta) = thermal[0].mesh.locate(x).ok_or(ThermalError::Probe(x))?;
@@ -286,17 +253,17 @@ impl CoupledSystem {
                 &thermal[0].point_trace(element, xi, eta),
             ));
         }
-        let probes = FullOutput::of_traces(&probe_traces, size);
+        let probes = of_traces(&probe_traces);
         let boundary = [0, 1].map(|b| {
             let samples = boundary_samples(&thermal[b], &settings.bodies[b].contact_edge);
             let splits: Vec<Split> = samples
                 .iter()
                 .map(|t| split(&thermal[b], &held[b], offsets[b], t))
                 .collect();
-            FullOutput::of_traces(&splits, size)
+            of_traces(&splits)
         });
-        let stored = [0, 1]
-            .map(|b| stored_output(&thermal[b], &held[b], offsets[b], size, settings.reference));
+        let stored =
+            [0, 1].map(|b| stored_output(&thermal[b], &held[b], offsets[b], settings.reference));
         let peclet = [0, 1].map(|b| peclet(input, &thermal[b], b));
         Ok(CoupledSystem {
             conductivity,
@@ -595,113 +562,32 @@ fn boundary_samples(
     samples
 }
 
-fn stored_output(
-    body: &ConductionBody,
-    held: &[f64],
-    offset: usize,
-    size: usize,
-    reference: f64,
-) -> FullOutput {
+fn stored_output(body: &ConductionBody, held: &[f64], offset: usize, reference: f64) -> Output {
     let weights = body.heat_content_weights();
     let uniform = body.uniform(reference);
     let mut constant = 0.0;
-    let mut matrix = Mat::<f64>::zeros(1, size);
+    let mut row = Vec::new();
     for (g, &w) in weights.iter().enumerate() {
         match body.free_index(g) {
             Some(f) => {
-                matrix[(0, offset + f)] = w;
+                row.push((offset + f, w));
                 constant -= w * uniform[g];
             }
             None => constant += w * (held[g] - uniform[g]),
         }
     }
-    FullOutput {
-        matrix,
+    Output {
+        rows: vec![row],
         offset: vec![constant],
     }
 }
 
-/// The thermal gap u_n⁽²⁾ − u_n⁽¹⁾ per unit temperature of each unknown, by the adjoint of
-/// each body's elastic solve (see the module docs).
-fn thermal_gap(
-    input: &ThermalBodies<'_>,
-    thermal: &[ConductionBody; 2],
-    held: &[Vec<f64>; 2],
-    offsets: [usize; 2],
-    size: usize,
-) -> Result<FullOutput, ThermalError> {
-    let contact = input.contact;
-    let n = contact.len();
-    let expansion: Vec<f64> = input
-        .settings
-        .materials
-        .iter()
-        .map(|m| m.expansion)
-        .collect();
-    let mut matrix = Mat::<f64>::zeros(n, size);
-    let mut offset = vec![0.0; n];
-    for b in 0..2 {
-        let body = input.elastic[b];
-        let heat = &thermal[b];
-        let elastic_error = |message: String| ThermalError::Elastic {
-            body: body.name.clone(),
-            message,
-        };
-        let loads = body
-            .thermal_loads(&expansion)
-            .map_err(|e| elastic_error(e.to_string()))?;
-        // X = K⁻¹ N: the displacement of a unit normal force at each contact point's trace;
-        // stored transposed (points × dofs) so that a dof's row of X is contiguous.
-        let mut x = Mat::<f64>::zeros(body.dofs.n_dofs(), n);
-        for (i, trace) in contact.traces[b].iter().enumerate() {
-            let normal = contact.points.normal[i];
-            for &(g, c) in trace {
-                x[(g[0], i)] += c * normal[0];
-                x[(g[1], i)] += c * normal[1];
-            }
-        }
-        body.solve_in_place(&mut x)
-            .map_err(|e| elastic_error(e.to_string()))?;
-        let xt = x.transpose().to_owned();
-        let sign = if b == 0 { -1.0 } else { 1.0 };
-        let reference = heat.uniform(input.settings.reference);
-        // G = Xᵀ F, element by element: the normal displacement at each point per unit
-        // temperature of each of the element's modes.
-        let mut column = vec![0.0; n];
-        for element in 0..body.mesh.elements.len() {
-            let ed = body.dofs.element_dofs(&body.mesh, element);
-            let f = body.thermal_load_matrix(&loads, element);
-            for (m, (tg, ts)) in heat.element_unknowns(element).into_iter().enumerate() {
-                column.iter_mut().for_each(|c| *c = 0.0);
-                for (r, (&ug, &us)) in ed.global.iter().zip(&ed.sign).enumerate() {
-                    let coef = sign * us * ts * f[(r, m)];
-                    if coef == 0.0 {
-                        continue;
-                    }
-                    let row = xt.col(ug);
-                    for (c, xv) in column.iter_mut().zip(row.iter()) {
-                        *c += coef * xv;
-                    }
-                }
-                // Free unknowns into the matrix; held ones and the reference are constants.
-                let constant = match heat.free_index(tg) {
-                    Some(f) => {
-                        for (i, &c) in column.iter().enumerate() {
-                            matrix[(i, offsets[b] + f)] += c;
-                        }
-                        -reference[tg]
-                    }
-                    None => held[b][tg] - reference[tg],
-                };
-                if constant != 0.0 {
-                    for (o, &c) in offset.iter_mut().zip(&column) {
-                        *o += c * constant;
-                    }
-                }
-            }
-        }
+/// The sparse output of traces.
+fn of_traces(traces: &[Split]) -> Output {
+    Output {
+        rows: traces.iter().map(|s| s.free.clone()).collect(),
+        offset: traces.iter().map(|s| s.held).collect(),
     }
-    Ok(FullOutput { matrix, offset })
 }
 
 /// v_max L / (2 a) of body `b` at the contact (see [`ThermalInfo::peclet`]).
