@@ -48,16 +48,19 @@ impl Output {
     }
 }
 
+/// One element of a [`GapBody`]: its elastic boundary dofs (dof, sign), its temperature
+/// unknowns (combined free index and sign; sign 0 where held) and its thermal load matrix's
+/// index in the body's `loads`.
+type GapElement = (Vec<(usize, f64)>, Vec<(usize, f64)>, usize);
+
 /// One body's part of the thermal gap: its elements' thermal loads seen through its adjoint.
 #[derive(Clone, Debug)]
 struct GapBody {
     /// Xᵀ (points × the body's elastic boundary dofs), times the gap's sign for the body
     /// (+ body 2, − body 1).
     adjoint: Mat<f64>,
-    /// Per element: its elastic boundary dofs (dof, sign), its temperature unknowns
-    /// (combined free index and sign; sign 0 where held) and its thermal load matrix's
-    /// index in `loads`.
-    elements: Vec<(Vec<(usize, f64)>, Vec<(usize, f64)>, usize)>,
+    /// Its elements.
+    elements: Vec<GapElement>,
     /// The condensed thermal load per unit temperature of each mode, per element type (N/K).
     loads: Vec<Mat<f64>>,
 }
