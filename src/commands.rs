@@ -310,7 +310,7 @@ pub(crate) fn steady_by(
         println!("{note}");
     }
     if vtk {
-        wearfem::vtk::write_steady(out, p, &outcome.state)?;
+        wearfem::vtk::write_steady(out, p, &outcome.state, None)?;
     }
     for w in &warnings {
         eprintln!("{w}");

@@ -534,7 +534,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 println!("{note}");
             }
             if wants_vtk(vtk, &p) {
-                wearfem::vtk::write_steady(&out, &p, &state)?;
+                wearfem::vtk::write_steady(&out, &p, &state, heat.as_ref())?;
             }
             let probes: Vec<String> = driver::contact_probes(&p, &contact)
                 .iter()

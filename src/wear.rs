@@ -131,8 +131,8 @@ pub struct Snapshot {
     pub direction: &'static str,
     /// Pressure at the end of the step, MPa.
     pub pressure: Vec<f64>,
-    /// With heat: the modal coordinates of the temperature at the step's end (not
-    /// serialised: the ParaView writer makes fields of them).
+    /// With heat: the modal coordinates of the temperature the step was solved with (its
+    /// start's; not serialised: the ParaView writer makes fields of them).
     #[serde(skip)]
     pub thermal_state: Option<Vec<f64>>,
     /// Shape at the end of the step, mm: the initial gap plus the wear so far (shifted to

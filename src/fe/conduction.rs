@@ -124,6 +124,7 @@ pub struct ConductionSpec {
 }
 
 /// One body's heat conduction operators over its free dofs.
+#[derive(Clone, Debug)]
 pub struct ConductionBody {
     /// Body name.
     pub name: String,

@@ -70,3 +70,28 @@ pub fn strain_energy(load: &[f64], u: &Displacement) -> f64 {
         .map(|(f, d)| f * d)
         .sum::<f64>()
 }
+
+/// A temperature field on an elastic body, for its thermal stress and for output: per
+/// element the coefficients of T − T_ref on the element's modes (the elasticity's basis; the
+/// heat stage's field on the same mesh, signs applied), K.
+#[derive(Clone, Debug)]
+pub struct TemperatureField {
+    /// Per element, the rise's coefficients on its modes, K.
+    pub rise: Vec<Vec<f64>>,
+    /// The stress-free temperature, °C.
+    pub reference: f64,
+    /// The body's thermal load operators (and the materials' expansion).
+    pub loads: std::sync::Arc<crate::elasticity::ThermalLoads>,
+}
+
+impl TemperatureField {
+    /// T − T_ref (K) at reference point (ξ, η) of `element` of `body`.
+    pub fn rise_at_reference(&self, body: &ElasticBody, element: usize, xi: f64, eta: f64) -> f64 {
+        let tab = body.basis.tabulate(&[xi], &[eta]);
+        self.rise[element]
+            .iter()
+            .zip(&tab.values)
+            .map(|(c, n)| c * n)
+            .sum()
+    }
+}

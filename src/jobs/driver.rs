@@ -445,6 +445,7 @@ pub fn steady_with_heat(
             None,
         ),
         Some(model) => {
+            let model = std::sync::Arc::new(model);
             let solved = crate::thermal_steady::steady_state_with_heat(
                 &contact,
                 &terms,
@@ -482,6 +483,16 @@ pub fn steady_by(
             .error(
                 "wear.sliding",
                 "the paper's §6 methods are for reciprocating sliding; use --method exact",
+            )
+            .into());
+    }
+    if problem.spec.heat.is_some() && method != crate::paper_steady::SteadyMethod::Exact {
+        // The spline and penalty iterations and the averaged shape know no temperature: a
+        // steady state of theirs would be the one without heat, under a problem with heat.
+        return Err(problem
+            .error(
+                "heat",
+                "the paper's §6 methods (averaged, spline, penalty) leave the heat out; the steady state with heat is the exact method's (--method exact, the default)",
             )
             .into());
     }

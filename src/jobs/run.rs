@@ -42,6 +42,8 @@ pub struct WearRun {
     pub body_names: [String; 2],
     /// With heat: the heat problem's set-up figures.
     pub heat: Option<crate::wear::thermal::ThermalInfo>,
+    /// With heat: the heat problem (for the temperature fields of the ParaView files).
+    pub heat_model: Option<std::sync::Arc<crate::wear::thermal::ThermalModel>>,
 }
 
 /// `wear.shape_zero_at` shifts the worn shape by a vertical rigid translation of the punch,
@@ -156,6 +158,7 @@ pub fn wear_until(
         warnings: std::sync::OnceLock::new(),
         body_names,
         heat: integrator.heat.as_ref().map(|m| m.info.clone()),
+        heat_model: integrator.heat.clone(),
     })
 }
 

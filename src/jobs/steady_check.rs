@@ -107,7 +107,7 @@ pub fn check(
         vec![&history.p_plus, &history.p_minus]
     };
     // With heat the steady state is the one with the periodic temperature.
-    let solved = match integrator.heat.as_deref() {
+    let solved = match integrator.heat.as_ref() {
         None => steady_state_near(
             contact,
             &integrator.half_period_wear(),

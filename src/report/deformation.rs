@@ -20,6 +20,7 @@ use crate::complementarity::{ContactSolution, Direction};
 use crate::contact::{CondensedContact, Trace};
 use crate::elasticity::{Displacement, ElasticBody};
 use crate::fields::PointValues;
+pub use crate::fields::TemperatureField;
 use crate::geometry::Point;
 use crate::problem::{Problem, ProblemError};
 
@@ -65,6 +66,9 @@ pub struct BodyField {
     pub elastic: Displacement,
     /// Rigid part, mm (the plate's motion for body 1).
     pub rigid: RigidMotion,
+    /// With heat: the temperature the body is at (its thermal strain is in `elastic`, its
+    /// thermal stress taken off the stress).
+    pub temperature: Option<TemperatureField>,
 }
 
 impl BodyField {
@@ -80,7 +84,28 @@ impl BodyField {
         let r = self.rigid.at(body.mesh.map(element, xi, eta));
         v.displacement[0] += r[0];
         v.displacement[1] += r[1];
+        if let Some(t) = &self.temperature {
+            // σ = D (ε − ε_th): the thermal strain is part of ε and carries no stress.
+            let rise = t.rise_at_reference(body, element, xi, eta);
+            let thermal = body.thermal_stress(&t.loads, element, rise);
+            for (s, th) in v.stress.iter_mut().zip(thermal) {
+                *s -= th;
+            }
+        }
         v
+    }
+
+    /// The temperature (°C) at reference point (ξ, η) of `element`, None without heat.
+    pub fn temperature_at_reference(
+        &self,
+        body: &ElasticBody,
+        element: usize,
+        xi: f64,
+        eta: f64,
+    ) -> Option<f64> {
+        self.temperature
+            .as_ref()
+            .map(|t| t.reference + t.rise_at_reference(body, element, xi, eta))
     }
 
     /// Values at physical point `x` (mm); `None` outside the body.
@@ -144,10 +169,24 @@ pub fn plate_motion(contact: &CondensedContact, rigid: &[f64]) -> RigidMotion {
 /// Each body is solved once more with the contact forces and its own loads.
 pub fn contact_fields(
     problem: &Problem,
+    bodies: (&ElasticBody, &ElasticBody),
+    contact: &CondensedContact,
+    solution: &ContactSolution,
+    direction: Direction,
+) -> Result<[BodyField; 2], ProblemError> {
+    contact_fields_with_heat(problem, bodies, contact, solution, direction, None)
+}
+
+/// [`contact_fields`] with the bodies at `temperatures` (body 1, body 2): each body is also
+/// loaded by its thermal strain, its internal modes recovered with it, and its stresses are
+/// D (ε − ε_th).
+pub fn contact_fields_with_heat(
+    problem: &Problem,
     (body1, body2): (&ElasticBody, &ElasticBody),
     contact: &CondensedContact,
     solution: &ContactSolution,
     direction: Direction,
+    temperatures: Option<[TemperatureField; 2]>,
 ) -> Result<[BodyField; 2], ProblemError> {
     let spec = problem
         .spec
@@ -166,18 +205,34 @@ pub fn contact_fields(
         add_trace_force(&traces1[i], *f, &mut load1);
         add_trace_force(&traces2[i], [-f[0], -f[1]], &mut load2);
     }
+    let [t1, t2] = match temperatures {
+        Some([a, b]) => [Some(a), Some(b)],
+        None => [None, None],
+    };
+    let solve = |body: &ElasticBody, mut load: Vec<f64>, t: &Option<TemperatureField>| {
+        let error = |e: crate::elasticity::ElasticityError| problem.error("bodies", e.to_string());
+        let Some(t) = t else {
+            return body.solve(&load).map_err(error);
+        };
+        let thermal = body.thermal_load_vector(&t.loads, |e| t.rise[e].clone());
+        for (l, f) in load.iter_mut().zip(thermal) {
+            *l += f;
+        }
+        let mut rhs = faer::Mat::from_fn(load.len(), 1, |i, _| load[i]);
+        body.solve_in_place(&mut rhs).map_err(error)?;
+        let boundary = (0..load.len()).map(|i| rhs[(i, 0)]).collect();
+        Ok(body.recover_thermal(boundary, &t.loads, |e| t.rise[e].clone()))
+    };
     Ok([
         BodyField {
-            elastic: body1
-                .solve(&load1)
-                .map_err(|e| problem.error("bodies", e.to_string()))?,
+            elastic: solve(body1, load1, &t1)?,
             rigid: plate_motion(contact, &solution.rigid),
+            temperature: t1,
         },
         BodyField {
-            elastic: body2
-                .solve(&load2)
-                .map_err(|e| problem.error("bodies", e.to_string()))?,
+            elastic: solve(body2, load2, &t2)?,
             rigid: RigidMotion::default(),
+            temperature: t2,
         },
     ])
 }

@@ -68,6 +68,8 @@ struct Grid {
     displacement: Vec<[f64; 2]>,
     stress: Vec<[f64; 3]>,
     von_mises: Vec<f64>,
+    /// °C where the body has a temperature (NaN elsewhere, never written then).
+    temperature: Vec<f64>,
     cells: Vec<[usize; 4]>,
     material: Vec<i32>,
     body: Vec<i32>,
@@ -92,6 +94,11 @@ impl Grid {
                     self.stress.push(v.stress);
                     self.von_mises
                         .push(von_mises(v.stress, body.analysis, poisson));
+                    self.temperature.push(
+                        b.field
+                            .temperature_at_reference(body, element, xi, eta)
+                            .unwrap_or(f64::NAN),
+                    );
                 }
             }
             let at = |i: usize, j: usize| first + j * (m + 1) + i;
@@ -199,8 +206,9 @@ const VTK_LINE: u8 = 3;
 const VTK_QUAD: u8 = 9;
 
 /// Write the bodies as one `.vtu` file: point data `displacement` (mm, 3 components),
-/// `stress_xx`, `stress_zz`, `stress_xz`, `von_mises` (MPa); cell data `material` (index in
-/// the problem's materials, alphabetical) and `body`.
+/// `stress_xx`, `stress_zz`, `stress_xz`, `von_mises` (MPa; with heat the stress is
+/// D (ε − ε_th), thermal stresses included), with heat `temperature` (°C); cell data
+/// `material` (index in the problem's materials, alphabetical) and `body`.
 pub fn write_bodies(path: &Path, bodies: &[VtkBody]) -> std::io::Result<()> {
     let mut grid = Grid::default();
     for b in bodies {
@@ -220,6 +228,12 @@ pub fn write_bodies(path: &Path, bodies: &[VtkBody]) -> std::io::Result<()> {
         ],
         cell_ints: vec![("material", &grid.material), ("body", &grid.body)],
     };
+    let mut piece = piece;
+    if grid.temperature.iter().all(|t| t.is_finite()) && !grid.temperature.is_empty() {
+        piece
+            .point_scalars
+            .push(("temperature", grid.temperature.clone()));
+    }
     write(path, &piece.xml())
 }
 

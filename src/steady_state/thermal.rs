@@ -53,6 +53,8 @@ pub struct PeriodicHeat {
     pub passes: usize,
     /// The pressures' change in the last pass, relative to their peak.
     pub change: f64,
+    /// The heat problem (for the temperature fields of the ParaView files).
+    pub model: std::sync::Arc<ThermalModel>,
 }
 
 /// Why there is no steady state with heat.
@@ -72,7 +74,7 @@ pub fn steady_state_with_heat(
     terms: &[(f64, f64)],
     sliding: SteadySliding,
     settings: SteadySettings,
-    model: &ThermalModel,
+    model: &std::sync::Arc<ThermalModel>,
 ) -> Result<ThermalSteadyState, ThermalSteadyError> {
     if !model.info.has_exit {
         return Err(ThermalSteadyError::NoExit);
@@ -154,6 +156,7 @@ pub fn steady_state_with_heat(
             modal,
             passes,
             change,
+            model: std::sync::Arc::clone(model),
         },
     })
 }

@@ -199,6 +199,7 @@ impl WearIntegrator {
             let (temperatures, max_temperature) = match heat.as_mut() {
                 Some(h) => {
                     ws.solved_thermal.clone_from(&ws.thermal);
+                    ws.solved_modal.clone_from(&h.state.a);
                     let (t, m) = h.after_step(
                         &ws.solution.pressure,
                         direction,
@@ -317,7 +318,7 @@ impl WearIntegrator {
                     half_period: half_periods,
                     direction: direction.symbol(),
                     pressure: pressure.clone(),
-                    thermal_state: heat.as_ref().map(|h| h.state.a.clone()),
+                    thermal_state: heat.as_ref().map(|_| ws.solved_modal.clone()),
                     shape: written.clone(),
                     contact_shape: contact_shape.clone(),
                 });
@@ -334,7 +335,7 @@ impl WearIntegrator {
         hist.shape = written;
         hist.contact_shape = contact_shape;
         if let Some(h) = &heat {
-            hist.thermal = Some(h.finish(ws.solved_thermal.clone()));
+            hist.thermal = Some(h.finish(ws.solved_thermal.clone(), ws.solved_modal.clone()));
         }
         for (depth, w) in hist.worn_depth.iter_mut().zip(&worn) {
             *depth = w.iter().cloned().fold(0.0, f64::max);

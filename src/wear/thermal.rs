@@ -168,6 +168,46 @@ pub struct ThermalModel {
     area: Vec<f64>,
     /// Figures of the set-up.
     pub info: ThermalInfo,
+    /// What the temperature fields are made of (for output).
+    fields: ThermalFields,
+}
+
+/// The modes over both bodies' unknowns and the bodies, for the temperature fields.
+#[derive(Debug)]
+struct ThermalFields {
+    modes: Mat<f64>,
+    bodies: [crate::conduction::ConductionBody; 2],
+    offsets: [usize; 2],
+    loads: [std::sync::Arc<crate::elasticity::ThermalLoads>; 2],
+    reference: f64,
+}
+
+impl ThermalModel {
+    /// The temperature fields of body 1 and body 2 at modal coordinates `a`, for their
+    /// thermal stresses and for output ([`crate::fields::TemperatureField`]).
+    pub fn temperature_fields(&self, a: &[f64]) -> [crate::fields::TemperatureField; 2] {
+        let f = &self.fields;
+        let free: Vec<f64> = (0..f.modes.nrows())
+            .map(|i| (0..a.len()).map(|j| f.modes[(i, j)] * a[j]).sum())
+            .collect();
+        [0, 1].map(|b| {
+            let body = &f.bodies[b];
+            let full = body.expand(&free[f.offsets[b]..f.offsets[b] + body.n_free()]);
+            let uniform = body.uniform(f.reference);
+            crate::fields::TemperatureField {
+                rise: (0..body.mesh.elements.len())
+                    .map(|e| {
+                        body.element_unknowns(e)
+                            .iter()
+                            .map(|&(g, s)| s * (full[g] - uniform[g]))
+                            .collect()
+                    })
+                    .collect(),
+                reference: f.reference,
+                loads: std::sync::Arc::clone(&f.loads[b]),
+            }
+        })
+    }
 }
 
 /// Figures of a thermal model's set-up, for the summary.
@@ -491,6 +531,9 @@ pub struct ThermalHistory {
     /// Modal coordinates of the end state (for fields and restarts).
     #[serde(skip)]
     pub state: Vec<f64>,
+    /// Modal coordinates of the temperature the last completed step was solved with.
+    #[serde(skip)]
+    pub solved_state: Vec<f64>,
     /// Heat made by friction over the run, mJ.
     pub generated: f64,
     /// Heat stored in the bodies at the end relative to the reference temperature, mJ.
@@ -501,7 +544,7 @@ pub struct ThermalHistory {
 
 impl HeatRun<'_> {
     /// The end of the run, `solved_gap` being the thermal gap of the last kept solve.
-    pub fn finish(&self, solved_gap: Vec<f64>) -> ThermalHistory {
+    pub fn finish(&self, solved_gap: Vec<f64>, solved_state: Vec<f64>) -> ThermalHistory {
         let a = &self.state.a;
         ThermalHistory {
             contact_temperature: [
@@ -511,6 +554,7 @@ impl HeatRun<'_> {
             thermal_gap: solved_gap,
             next_thermal_gap: self.gap.clone(),
             state: a.clone(),
+            solved_state,
             generated: self.state.generated,
             stored: self.model.stored_heat(&self.state),
             time: self.state.time,

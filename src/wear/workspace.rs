@@ -79,6 +79,9 @@ pub(super) struct Workspace {
     /// end-of-step thermal gap, for the split's error estimate.
     pub split_trial: Vec<f64>,
     pub split_solution: ContactSolution,
+    /// With heat: the modal coordinates of the temperature the last kept step was solved
+    /// with.
+    pub solved_modal: Vec<f64>,
     pub solution: ContactSolution,
 }
 
@@ -108,6 +111,7 @@ impl Workspace {
             solved_thermal: Vec::new(),
             split_trial: vec![0.0; n],
             split_solution: ContactSolution::default(),
+            solved_modal: Vec::new(),
             solution: ContactSolution::default(),
         }
     }

@@ -79,6 +79,7 @@ impl BlockOperator {
 
 /// Two operators of one size assembled as sparse matrices (both triangles) on their common
 /// pattern, and the pattern itself (for factorisations shared by K + σC).
+#[derive(Clone, Debug)]
 pub struct PairedMatrices {
     /// The first operator's matrix.
     pub first: SparseColMat<usize, f64>,

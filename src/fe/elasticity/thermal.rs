@@ -16,6 +16,7 @@ use faer::linalg::solvers::Solve;
 use faer::{Mat, Side};
 
 /// The thermal load operators of one body.
+#[derive(Clone, Debug)]
 pub struct ThermalLoads {
     /// Per element type: the condensed boundary load per unit ΔT mode, (F_b − Rᵀ F_i)
     /// (N/K, 2·4p × n_modes), and the internal response K_ii⁻¹ F_i (mm/K).

@@ -9,11 +9,13 @@
 use super::{write_bodies, write_contact, write_pvd, PvdEntry, VtkBody, VtkContact};
 use crate::complementarity::{ContactSolver, Direction, Status};
 use crate::contact::CondensedContact;
-use crate::deformation::{contact_fields, BodyField, RigidMotion};
+use crate::deformation::{contact_fields_with_heat, BodyField, RigidMotion};
 use crate::driver::{direction, method, WearRun};
 use crate::output::OutputError;
 use crate::problem::{Problem, ProblemError};
 use crate::steady::{SteadySliding, SteadyState};
+use crate::thermal_steady::PeriodicHeat;
+use crate::wear::thermal::ThermalModel;
 use std::path::Path;
 
 /// Name of the collection file written into the output directory.
@@ -52,6 +54,8 @@ pub struct ContactState {
     pub shape: Vec<f64>,
     /// Pressure recorded by the run at this state, MPa, if any.
     pub recorded_pressure: Option<Vec<f64>>,
+    /// With heat: the modal coordinates of the temperature the state was solved with.
+    pub temperature: Option<Vec<f64>>,
 }
 
 fn io(path: &Path) -> impl Fn(std::io::Error) -> OutputError + '_ {
@@ -67,6 +71,7 @@ pub fn write_contact_states(
     dir: &Path,
     problem: &Problem,
     states: &[ContactState],
+    heat: Option<&ThermalModel>,
 ) -> Result<(), VtkError> {
     let (contact, body1, body2) = CondensedContact::build(problem)?;
     let mut solver = ContactSolver::new(&contact, method(problem)?);
@@ -82,12 +87,16 @@ pub fn write_contact_states(
             });
             continue;
         }
-        let fields = contact_fields(
+        let temperatures = heat
+            .zip(state.temperature.as_ref())
+            .map(|(model, a)| model.temperature_fields(a));
+        let fields = contact_fields_with_heat(
             problem,
             (&body1, &body2),
             &contact,
             &solution,
             state.direction,
+            temperatures,
         )?;
         let bodies_file = format!("vtk/bodies_{k:04}.vtu");
         let path = dir.join(&bodies_file);
@@ -125,6 +134,18 @@ pub fn write_contact_states(
         if let Some(p) = &state.recorded_pressure {
             values.push(("pressure_recorded", &p[..]));
         }
+        let heat_values = heat.zip(state.temperature.as_ref()).map(|(model, a)| {
+            (
+                model.contact_temperature[0].at(a),
+                model.contact_temperature[1].at(a),
+                model.gap.at(a),
+            )
+        });
+        if let Some((t1, t2, gap)) = &heat_values {
+            values.push(("temperature", &t1[..]));
+            values.push(("temperature_partner", &t2[..]));
+            values.push(("thermal_gap", &gap[..]));
+        }
         let contact_file = format!("vtk/contact_{k:04}.vtu");
         let path = dir.join(&contact_file);
         let line = VtkContact {
@@ -158,8 +179,9 @@ pub fn write_contact_job(dir: &Path, problem: &Problem) -> Result<(), VtkError> 
         gap: contact.points.initial_gap.clone(),
         shape: contact.points.initial_gap.clone(),
         recorded_pressure: None,
+        temperature: None,
     };
-    write_contact_states(dir, problem, &[state])
+    write_contact_states(dir, problem, &[state], None)
 }
 
 /// ParaView files of `wearfem run`: the initial state (time 0), every recorded step
@@ -173,12 +195,14 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &WearRun) -> Result<(), Vtk
             Direction::Minus
         }
     };
+    let heat = run.heat_model.as_deref();
     let mut states = vec![ContactState {
         time: 0.0,
         direction: first,
         gap: run.contact.points.initial_gap.clone(),
         shape: run.contact.points.initial_gap.clone(),
         recorded_pressure: None,
+        temperature: heat.map(|m| m.start().a),
     }];
     let h = &run.history;
     for s in &h.snapshots {
@@ -188,6 +212,7 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &WearRun) -> Result<(), Vtk
             gap: s.contact_shape.clone(),
             shape: s.shape.clone(),
             recorded_pressure: Some(s.pressure.clone()),
+            temperature: s.thermal_state.clone(),
         });
     }
     if let Some(last) = h.steps.last() {
@@ -204,15 +229,23 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &WearRun) -> Result<(), Vtk
                 gap: h.contact_shape.clone(),
                 shape: h.shape.clone(),
                 recorded_pressure: Some(pressure.clone()),
+                temperature: h.thermal.as_ref().map(|t| t.solved_state.clone()),
             });
         }
     }
-    write_contact_states(dir, problem, &states)
+    write_contact_states(dir, problem, &states, heat)
 }
 
 /// ParaView files of `wearfem steady`: the steady shape in the '+' half cycle (time 0) and
-/// the '−' half cycle (time 1); under monotonic sliding the one direction.
-pub fn write_steady(dir: &Path, problem: &Problem, state: &SteadyState) -> Result<(), VtkError> {
+/// the '−' half cycle (time 1); under monotonic sliding the one direction. With heat
+/// (`heat`), each half cycle at the periodic temperature of its start, its gap the shape plus
+/// that temperature's thermal gap.
+pub fn write_steady(
+    dir: &Path,
+    problem: &Problem,
+    state: &SteadyState,
+    heat: Option<&PeriodicHeat>,
+) -> Result<(), VtkError> {
     let mut states = vec![];
     match state.sliding {
         SteadySliding::Monotonic(d) => states.push((d, &state.p_plus)),
@@ -224,15 +257,24 @@ pub fn write_steady(dir: &Path, problem: &Problem, state: &SteadyState) -> Resul
     let states: Vec<ContactState> = states
         .into_iter()
         .enumerate()
-        .map(|(k, (d, p))| ContactState {
-            time: k as f64,
-            direction: d,
-            gap: state.shape.clone(),
-            shape: state.shape.clone(),
-            recorded_pressure: Some(p.clone()),
+        .map(|(k, (d, p))| {
+            let mut gap = state.shape.clone();
+            if let Some(heat) = heat {
+                for (g, t) in gap.iter_mut().zip(&heat.thermal_gap[k]) {
+                    *g += t;
+                }
+            }
+            ContactState {
+                time: k as f64,
+                direction: d,
+                gap,
+                shape: state.shape.clone(),
+                recorded_pressure: Some(p.clone()),
+                temperature: heat.map(|h| h.modal[k].clone()),
+            }
         })
         .collect();
-    write_contact_states(dir, problem, &states)
+    write_contact_states(dir, problem, &states, heat.map(|h| &*h.model))
 }
 
 /// ParaView files of `wearfem elastic`: every body on its own supports under its own loads.
@@ -246,6 +288,7 @@ pub fn write_elastic(dir: &Path, problem: &Problem) -> Result<(), VtkError> {
                 .solve(&load)
                 .map_err(|e| problem.error("bodies", e.to_string()))?,
             rigid: RigidMotion::default(),
+            temperature: None,
         };
         bodies.push((body, field));
     }

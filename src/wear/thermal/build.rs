@@ -3,7 +3,7 @@
 //! as the reference), and its reduction to the modes the run steps ([`ThermalModel`]).
 
 use super::outputs::{thermal_gap, GapOutput, Output};
-use super::{Sliding, ThermalInfo, ThermalModel, INTERFACE_CONDUCTANCE};
+use super::{Sliding, ThermalFields, ThermalInfo, ThermalModel, INTERFACE_CONDUCTANCE};
 use crate::basis::Space;
 use crate::conduction::blocks::{assemble_pair, Block, BlockOperator, PairedMatrices};
 use crate::conduction::reduced::{
@@ -13,10 +13,12 @@ use crate::conduction::transient::Sdirk2;
 use crate::conduction::{ConductionBody, ConductionSpec, EdgePiece};
 use crate::contact::CondensedContact;
 use crate::elasticity::ElasticBody;
+use crate::elasticity::ThermalLoads;
 use crate::geometry::Point;
 use crate::heat_input::{HeatSettings, Partition};
 use crate::quadrature::gauss_lobatto;
 use faer::Mat;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// Errors of the heat problem's set-up.
@@ -102,6 +104,10 @@ pub struct CoupledSystem {
     /// The two bodies' conduction operators, and where each one's free unknowns start.
     bodies: [ConductionBody; 2],
     offsets: [usize; 2],
+    /// The two bodies' thermal load operators.
+    loads: [Arc<ThermalLoads>; 2],
+    /// The stress-free temperature, °C.
+    reference: f64,
 }
 
 /// A trace over one body's full unknowns as (combined free index, coefficient) pairs and the
@@ -233,12 +239,22 @@ impl CoupledSystem {
             Partition::Fraction(_) => thermal[0].has_exit && thermal[1].has_exit,
         };
         let expansion: Vec<f64> = settings.materials.iter().map(|m| m.expansion).collect();
+        let mut loads = Vec::with_capacity(2);
+        for body in input.elastic {
+            loads.push(Arc::new(body.thermal_loads(&expansion).map_err(|e| {
+                ThermalError::Elastic {
+                    body: body.name.clone(),
+                    message: e.to_string(),
+                }
+            })?));
+        }
+        let loads: [Arc<ThermalLoads>; 2] = [Arc::clone(&loads[0]), Arc::clone(&loads[1])];
         let gap = thermal_gap(
             input.elastic,
             &thermal,
             contact,
             offsets,
-            &expansion,
+            [&loads[0], &loads[1]],
             settings.reference,
         )
         .map_err(|(body, message)| ThermalError::Elastic { body, message })?;
@@ -284,6 +300,8 @@ impl CoupledSystem {
             area,
             bodies: thermal,
             offsets,
+            loads,
+            reference: settings.reference,
         })
     }
 
@@ -445,7 +463,15 @@ impl ThermalModel {
                 (decay(rate, h), sine, constant_gain(rate, h))
             })
             .collect();
+        let fields = ThermalFields {
+            modes: model.modes.clone(),
+            bodies: system.bodies.clone(),
+            offsets: system.offsets,
+            loads: [Arc::clone(&system.loads[0]), Arc::clone(&system.loads[1])],
+            reference: system.reference,
+        };
         Ok(ThermalModel {
+            fields,
             half_period_gains,
             rates: model.rates.clone(),
             flux_modal,

@@ -9,7 +9,7 @@ use super::Affine;
 use crate::conduction::reduced::ReducedModel;
 use crate::conduction::ConductionBody;
 use crate::contact::CondensedContact;
-use crate::elasticity::ElasticBody;
+use crate::elasticity::{ElasticBody, ThermalLoads};
 use faer::{Mat, MatRef};
 
 /// y = M T + c with M given by sparse rows over the combined free unknowns.
@@ -125,14 +125,14 @@ impl GapOutput {
 
 /// The thermal gap of the two bodies: `elastic` as the contact built them (body 1 clamped
 /// at its plate edge), `thermal` their conduction operators with their free unknowns from
-/// `offsets` in the combined numbering, `expansion` α of each material (1/K) and `reference`
-/// the stress-free temperature (°C).
+/// `offsets` in the combined numbering, `loads` their thermal load operators and
+/// `reference` the stress-free temperature (°C).
 pub fn thermal_gap(
     elastic: [&ElasticBody; 2],
     thermal: &[ConductionBody; 2],
     contact: &CondensedContact,
     offsets: [usize; 2],
-    expansion: &[f64],
+    loads: [&ThermalLoads; 2],
     reference: f64,
 ) -> Result<GapOutput, (String, String)> {
     let n = contact.len();
@@ -142,7 +142,7 @@ pub fn thermal_gap(
         let body = elastic[b];
         let heat = &thermal[b];
         let error = |e: crate::elasticity::ElasticityError| (body.name.clone(), e.to_string());
-        let loads = body.thermal_loads(expansion).map_err(error)?;
+        let loads = loads[b];
         // X = K⁻¹ N: the displacement of a unit normal force at each contact point's trace.
         let mut x = Mat::<f64>::zeros(body.dofs.n_dofs(), n);
         for (i, trace) in contact.traces[b].iter().enumerate() {
@@ -180,7 +180,7 @@ pub fn thermal_gap(
                 types.resize(ty + 1, None);
             }
             let load =
-                types[ty].get_or_insert_with(|| body.thermal_load_matrix(&loads, element).clone());
+                types[ty].get_or_insert_with(|| body.thermal_load_matrix(loads, element).clone());
             // The constant part: held temperatures where held, minus the reference
             // everywhere.
             let constant: Vec<f64> = modes
