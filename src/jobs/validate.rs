@@ -11,6 +11,7 @@ use serde_json::{json, Value};
 use std::time::Instant;
 
 mod cases;
+mod heat_cases;
 mod wear_cases;
 
 /// How a check's difference is measured and bounded.
@@ -257,6 +258,9 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     if !options.quick {
         wear_cases::brake(&mut checks)?;
     }
+    heat_cases::conduction(&mut checks)?;
+    heat_cases::thermal_strain(&mut checks)?;
+    heat_cases::punch(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks
             .iter_mut()
