@@ -525,7 +525,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 }
                 return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written. {hint}: run the time integration (wearfem run) instead", state.status, state.wear_residual)));
             }
-            let warnings = driver::steady_warnings(&p, &contact, &state);
+            let mut warnings = driver::steady_warnings(&p, &contact, &state);
+            if let Some(heat) = &heat {
+                warnings.extend(wearfem::jobs::heat::steady_warnings(
+                    &p, &contact, &state, heat,
+                ));
+            }
             wearfem::output::write_steady(&out, &p, &contact, &state, seconds, &warnings)?;
             if let Some(heat) = &heat {
                 wearfem::output::write_steady_heat(&out, &p, &contact, heat)?;

@@ -168,7 +168,7 @@ fn heat_that_cannot_leave_has_no_steady_state() {
     // A run integrates the transient all the same, and says what it is.
     let (code, _, err, out) = run_cli("run", &["--steps", "4"], &text, "sealed_run");
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("cannot leave"), "{err}");
+    assert!(err.contains("cannot lose it"), "{err}");
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     assert_eq!(summary["heat"]["heat_can_leave"], false);

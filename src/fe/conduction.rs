@@ -59,6 +59,19 @@ pub enum ConductionError {
         /// Material index.
         material: usize,
     },
+    /// A held temperature on part of an element edge: the edge's modes cannot hold a value
+    /// on part of it and leave the rest free.
+    #[error("body \"{body}\": a temperature is held on part of an element edge (element {element}, edge parameters {from} … {to}); the whole element edge would be held, also where it is not asked")]
+    PartialHeld {
+        /// Body name.
+        body: String,
+        /// Element index.
+        element: usize,
+        /// Where the piece starts along the edge (−1 … 1).
+        from: f64,
+        /// Where it ends.
+        to: f64,
+    },
     /// The sparse matrices could not be built or factorised.
     #[error("body \"{body}\": {message}")]
     Numerical {
@@ -318,6 +331,14 @@ impl ConductionBody {
                     &mut load,
                 )),
                 EdgeCondition::Temperature(value) => {
+                    if piece.t != [-1.0, 1.0] {
+                        return Err(ConductionError::PartialHeld {
+                            body: spec.name.clone(),
+                            element: piece.element,
+                            from: piece.t[0],
+                            to: piece.t[1],
+                        });
+                    }
                     let trace = basis.edge_trace(piece.local);
                     let unknowns = element_unknowns(mesh, &dofs, &basis, piece.element);
                     for (k, &mode) in trace.iter().enumerate() {

@@ -117,8 +117,10 @@ pub struct BodyHeat {
     /// Its contact edge's element edges (element, local edge).
     pub contact_edge: Vec<(usize, usize)>,
     /// Body 2 only: the condition of the part of its contact edge that body 1 does not
-    /// cover (None: insulated).
+    /// cover (None: insulated), and the key it was given by.
     pub uncovered: Option<EdgeCondition>,
+    /// The key `uncovered` comes from (`heat.other_edges` or `heat.edges[k]`).
+    pub uncovered_key: String,
 }
 
 /// The validated `[heat]` section.
@@ -381,6 +383,7 @@ impl Problem {
             .to_vec();
         let mut named: Vec<((usize, usize), Option<EdgeCondition>)> = Vec::new();
         let mut uncovered = other;
+        let mut uncovered_key = "heat.other_edges".to_string();
         for (k, e) in heat.edges.iter().enumerate() {
             if e.body != self.spec.bodies[b].name {
                 continue;
@@ -403,6 +406,7 @@ impl Problem {
                     return Err(self.error(format!("{key}.temperature"), format!("\"{}\" is body 2's contact edge: its part under body 1 takes the frictional heat and cannot be held at a temperature; hold another edge", e.edge)));
                 }
                 uncovered = c;
+                uncovered_key = key;
                 continue;
             }
             let edges = self.named_edge(&mesh, b, &e.edge, &format!("{key}.edge"))?;
@@ -433,6 +437,7 @@ impl Problem {
             edges,
             contact_edge,
             uncovered: if which == 1 { uncovered } else { None },
+            uncovered_key,
         })
     }
 }

@@ -72,7 +72,7 @@ pub fn summary(info: &ThermalInfo, thermal: &ThermalHistory) -> Value {
         "modes": info.modes,
         "shifts_per_s": numbers(&info.shifts),
         "interface_conductance": number(info.interface_conductance),
-        "heat_can_leave": info.has_exit,
+        "heat_can_leave": !info.trapped,
         "peclet": numbers(&info.peclet),
         "setup_seconds": info.seconds,
         "heated_seconds": number(thermal.time),
@@ -95,8 +95,11 @@ pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<Stri
     };
     let file = &problem.file;
     let mut warnings = Vec::new();
-    if !info.has_exit {
-        warnings.push(format!("warning: {file}: heat: the heat cannot leave the bodies (every edge is insulated and the faces do not convect), so their temperature rises without end: the temperatures and the thermal distortion are those of bodies that keep all the frictional heat, and `wearfem steady` has no steady state to give"));
+    if info.trapped {
+        warnings.push(format!("warning: {file}: heat: frictional heat enters a body that cannot lose it (its edges insulated, its faces not convecting), so its temperature rises without end: the temperatures and the thermal distortion are those of a body that keeps all its heat, and `wearfem steady` has no steady state to give"));
+    }
+    if info.held_points > 0 {
+        warnings.push(format!("warning: {file}: heat: {} contact point(s) lie where the contact edge meets an edge held at a temperature; the part of their frictional heat that falls on the held edge goes straight into it (the held temperature does not rise), so the contact there is cooler than a corner that is not held", info.held_points));
     }
     let h = &run.history;
     if info.interface_conductance > 0.0 && !h.p_plus.is_empty() {
@@ -122,6 +125,38 @@ pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<Stri
         .fold(f64::NEG_INFINITY, f64::max);
     if hottest > PROPERTY_TEMPERATURE {
         warnings.push(format!("warning: {file}: heat: the bodies reach {hottest:.0} °C, where the conductivity, heat capacity, expansion and moduli of most engineering materials differ from their room-temperature values, which the model holds constant"));
+    }
+    warnings
+}
+
+/// What the steady state with heat says beyond its numbers: heat crossing between points
+/// that are not in contact in either half cycle.
+pub fn steady_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    state: &crate::steady::SteadyState,
+    heat: &crate::thermal_steady::PeriodicHeat,
+) -> Vec<String> {
+    let info = &heat.model.info;
+    let mut warnings = Vec::new();
+    let file = &problem.file;
+    if info.interface_conductance > 0.0 {
+        let x = &contact.points.x;
+        let apart: Vec<usize> = (0..x.len())
+            .filter(|&i| state.p_plus[i] <= 0.0 && state.p_minus.get(i).is_none_or(|&p| p <= 0.0))
+            .collect();
+        if let (Some(&first), Some(&last)) = (apart.first(), apart.last()) {
+            warnings.push(format!(
+                "warning: {file}: heat: perfect thermal contact ties every contact point to its partner, and {} of the {} points carry no pressure in the steady state (x = {:.3} … {:.3} mm): heat crosses there as if they touched; name a contact edge no wider than the contact, or give heat.partition a fraction",
+                apart.len(),
+                x.len(),
+                x[first][0],
+                x[last][0]
+            ));
+        }
+    }
+    if info.held_points > 0 {
+        warnings.push(format!("warning: {file}: heat: {} contact point(s) lie where the contact edge meets an edge held at a temperature; the part of their frictional heat that falls on the held edge goes straight into it", info.held_points));
     }
     warnings
 }

@@ -95,6 +95,20 @@ impl BodyField {
         v
     }
 
+    /// E α ΔT (MPa) at reference point (ξ, η) of `element` in plane strain, the out-of-plane
+    /// stress that ε_yy = 0 adds where the body is heated; 0 in plane stress or without heat.
+    pub fn held_back_stress(&self, body: &ElasticBody, element: usize, xi: f64, eta: f64) -> f64 {
+        match (&self.temperature, body.analysis) {
+            (Some(t), crate::material::Analysis::PlaneStrain { .. }) => {
+                let m = body.mesh.elements[element].material;
+                body.materials[m].young
+                    * t.loads.expansion[m]
+                    * t.rise_at_reference(body, element, xi, eta)
+            }
+            _ => 0.0,
+        }
+    }
+
     /// The temperature (°C) at reference point (ξ, η) of `element`, None without heat.
     pub fn temperature_at_reference(
         &self,

@@ -49,10 +49,18 @@ pub struct VtkContact<'a> {
 /// Von Mises equivalent stress (MPa) of the in-plane stress [σ_xx, σ_zz, σ_xz]; under plane
 /// strain with σ_yy = ν (σ_xx + σ_zz), under plane stress with σ_yy = 0.
 pub fn von_mises(stress: [f64; 3], analysis: Analysis, poisson: f64) -> f64 {
+    von_mises_heated(stress, analysis, poisson, 0.0)
+}
+
+/// [`von_mises`] of a heated body: in plane strain, ε_yy = 0 holds back the out-of-plane
+/// thermal expansion, so σ_yy = ν (σ_xx + σ_zz) − E α ΔT; `held_back` is E α ΔT (MPa, 0 in
+/// plane stress, where σ_yy = 0 whatever the temperature). A free block heated uniformly in
+/// plane strain has σ_yy = −E α ΔT and a von Mises stress of E α ΔT, not zero.
+pub fn von_mises_heated(stress: [f64; 3], analysis: Analysis, poisson: f64, held_back: f64) -> f64 {
     let [sx, sz, sxz] = stress;
     let sy = match analysis {
         Analysis::PlaneStress { .. } => 0.0,
-        Analysis::PlaneStrain { .. } => poisson * (sx + sz),
+        Analysis::PlaneStrain { .. } => poisson * (sx + sz) - held_back,
     };
     (0.5 * ((sx - sy).powi(2) + (sy - sz).powi(2) + (sz - sx).powi(2)) + 3.0 * sxz * sxz).sqrt()
 }
@@ -92,8 +100,13 @@ impl Grid {
                     self.points.push(body.mesh.map(element, xi, eta));
                     self.displacement.push(v.displacement);
                     self.stress.push(v.stress);
-                    self.von_mises
-                        .push(von_mises(v.stress, body.analysis, poisson));
+                    let held_back = b.field.held_back_stress(body, element, xi, eta);
+                    self.von_mises.push(von_mises_heated(
+                        v.stress,
+                        body.analysis,
+                        poisson,
+                        held_back,
+                    ));
                     self.temperature.push(
                         b.field
                             .temperature_at_reference(body, element, xi, eta)
@@ -303,5 +316,16 @@ mod tests {
         // Plane strain, equibiaxial σ with ν = 0.5: σ_yy = σ, hydrostatic, σ_vM = 0.
         let strain = Analysis::PlaneStrain { thickness: 1.0 };
         assert!(von_mises([50.0, 50.0, 0.0], strain, 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_heated_plane_strain_body_carries_its_held_back_stress() {
+        // A free block heated by ΔT in plane strain: σ_xx = σ_zz = σ_xz = 0, σ_yy = −E α ΔT,
+        // so its von Mises stress is E α ΔT (e.g. 2e5 · 1.2e-5 · 50 = 120 MPa); in plane
+        // stress nothing holds it back.
+        let strain = Analysis::PlaneStrain { thickness: 1.0 };
+        let stress = Analysis::PlaneStress { thickness: 1.0 };
+        assert!((von_mises_heated([0.0; 3], strain, 0.3, 120.0) - 120.0).abs() < 1e-12);
+        assert_eq!(von_mises_heated([0.0; 3], stress, 0.3, 120.0), 0.0);
     }
 }

@@ -76,7 +76,7 @@ pub fn steady_state_with_heat(
     settings: SteadySettings,
     model: &std::sync::Arc<ThermalModel>,
 ) -> Result<ThermalSteadyState, ThermalSteadyError> {
-    if !model.info.has_exit {
+    if model.info.trapped {
         return Err(ThermalSteadyError::NoExit);
     }
     let mut state = steady_state_near(contact, terms, sliding, settings, None)?;

@@ -183,13 +183,20 @@ struct ThermalFields {
 }
 
 impl ThermalModel {
+    /// The temperature (°C) of both bodies' free unknowns (body 1's first) at modal
+    /// coordinates `a`: Φ a.
+    pub fn free_field(&self, a: &[f64]) -> Vec<f64> {
+        let f = &self.fields;
+        (0..f.modes.nrows())
+            .map(|i| (0..a.len()).map(|j| f.modes[(i, j)] * a[j]).sum())
+            .collect()
+    }
+
     /// The temperature fields of body 1 and body 2 at modal coordinates `a`, for their
     /// thermal stresses and for output ([`crate::fields::TemperatureField`]).
     pub fn temperature_fields(&self, a: &[f64]) -> [crate::fields::TemperatureField; 2] {
         let f = &self.fields;
-        let free: Vec<f64> = (0..f.modes.nrows())
-            .map(|i| (0..a.len()).map(|j| f.modes[(i, j)] * a[j]).sum())
-            .collect();
+        let free = self.free_field(a);
         [0, 1].map(|b| {
             let body = &f.bodies[b];
             let full = body.expand(&free[f.offsets[b]..f.offsets[b] + body.n_free()]);
@@ -221,9 +228,16 @@ pub struct ThermalInfo {
     pub shifts: Vec<f64>,
     /// Interface conductance h_c of perfect contact, mW/(mm²·K) (0 with a given share).
     pub interface_conductance: f64,
-    /// Whether heat can leave the bodies (through a held or convecting edge or the faces):
-    /// without, there is no steady state.
+    /// Whether every part of the heat problem can lose heat (through a held or convecting
+    /// edge or the faces); when not, its conductivity is singular (a constant temperature
+    /// of a sealed body is a mode of rate 0).
     pub has_exit: bool,
+    /// Whether frictional heat enters a body that cannot lose it: its temperature rises
+    /// without end, and there is no steady state.
+    pub trapped: bool,
+    /// Contact points whose heat-receiving trace touches an edge held at a temperature:
+    /// the share of their heat on the held unknowns goes straight into the held edge.
+    pub held_points: usize,
     /// Péclet number of each body, v_max L / (2 a): the largest sliding speed times half the
     /// contact length over the material's diffusivity at the contact. Above about 1 the
     /// heat moves with the sliding faster than it spreads.
@@ -259,6 +273,8 @@ pub struct ThermalState {
     cycle_time: f64,
     /// The heat of one half period of each direction's last pressure, mJ.
     last_heat: [f64; 2],
+    /// The k of the current cycle's first step.
+    first_k: usize,
     scratch: Vec<f64>,
 }
 
@@ -274,6 +290,7 @@ impl ThermalModel {
             cycle_generated: 0.0,
             cycle_time: 0.0,
             last_heat: [0.0; 2],
+            first_k: 0,
             scratch: vec![0.0; self.rates.len()],
         }
     }
@@ -364,8 +381,9 @@ impl ThermalModel {
     /// the cycle's first step the state moves to the start of a half period of the second
     /// direction: k alternating half periods from the cycle's start (k − 1 if k is even, so
     /// that they end with the first direction), the second direction's halves at its last
-    /// pressure. After the second step the cycle is done again from its start, with both
-    /// directions' pressures of this cycle, and the next cycle starts there.
+    /// pressure. After the second step the cycle is done again from its start, its k₁ + k₂
+    /// half periods (the two steps' k, equal unless a schedule changes k between them) with
+    /// both directions' pressures of this cycle, and the next cycle starts there.
     pub fn advance(
         &self,
         state: &mut ThermalState,
@@ -390,6 +408,7 @@ impl ThermalModel {
                     .unwrap_or_else(|| increment.clone());
                 let half_heat = heat * 2.0 * amplitude;
                 if first_half {
+                    state.first_k = k;
                     let halves = if k % 2 == 1 { k } else { k - 1 };
                     let mut to = std::mem::take(&mut state.a);
                     self.alternate(&state.cycle, &increment, &other, halves, &mut to);
@@ -400,13 +419,18 @@ impl ThermalModel {
                         + state.last_heat[1 - slot] * others;
                     state.time = state.cycle_time + h * halves as f64;
                 } else {
+                    // The cycle's half periods: the first step's k and this one's (they differ
+                    // where a schedule changes k between the two).
+                    let halves = state.first_k.max(1) + k;
                     let mut to = std::mem::take(&mut state.a);
-                    self.alternate(&state.cycle, &other, &increment, 2 * k, &mut to);
+                    self.alternate(&state.cycle, &other, &increment, halves, &mut to);
                     state.a = to;
                     state.cycle.copy_from_slice(&state.a);
-                    state.cycle_generated += (half_heat + state.last_heat[1 - slot]) * k as f64;
+                    let (firsts, seconds) = (halves - halves / 2, halves / 2);
+                    state.cycle_generated +=
+                        state.last_heat[1 - slot] * firsts as f64 + half_heat * seconds as f64;
                     state.generated = state.cycle_generated;
-                    state.cycle_time += 2.0 * h * k as f64;
+                    state.cycle_time += h * halves as f64;
                     state.time = state.cycle_time;
                 }
                 state.last_heat[slot] = half_heat;
@@ -567,13 +591,10 @@ impl ThermalModel {
     /// pressures `p_plus` and `p_minus` (MPa): the modal coordinates at the start of a '+'
     /// half (the end of a '−' one) and at the start of a '−' half. Per mode, with the
     /// half-period map a ↦ e a + g_d, a₊ = (e g₊ + g₋)/(1 − e²) and a₋ = e a₊ + g₊. Under
-    /// monotonic sliding both are the stationary state under `p_plus`. None if some mode
-    /// keeps its heat (λ = 0: no edge or face lets the heat out), when no periodic state
-    /// exists.
+    /// monotonic sliding both are the stationary state under `p_plus`. A mode of rate 0 (a
+    /// body that cannot lose heat) keeps its initial value if a period brings it no net heat;
+    /// if one does, its temperature rises for ever and there is no periodic state: None.
     pub fn periodic_state(&self, p_plus: &[f64], p_minus: &[f64]) -> Option<[Vec<f64>; 2]> {
-        if self.rates.contains(&0.0) {
-            return None;
-        }
         let r = self.rates.len();
         let mut plus = vec![0.0; r];
         let mut minus = vec![0.0; r];
@@ -596,9 +617,17 @@ impl ThermalModel {
                 Some([start_plus, start_minus])
             }
             Sliding::Monotonic { speed, .. } => {
-                let a: Vec<f64> = (0..r)
-                    .map(|j| (speed * plus[j] + self.source_modal[j]) / self.rates[j])
-                    .collect();
+                let mut a = vec![0.0; r];
+                for j in 0..r {
+                    let g = speed * plus[j] + self.source_modal[j];
+                    a[j] = if self.rates[j] > 0.0 {
+                        g / self.rates[j]
+                    } else if g.abs() <= 1e-9 * (g.abs() + self.initial[j].abs()) {
+                        self.initial[j]
+                    } else {
+                        return None;
+                    };
+                }
                 Some([a.clone(), a])
             }
         }

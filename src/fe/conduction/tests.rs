@@ -325,3 +325,49 @@ fn lobatto_points_of_an_edge_reproduce_a_constant() {
         assert!((v - 35.0).abs() < 1e-13, "{v}");
     }
 }
+
+#[test]
+fn slab_losing_its_heat_by_convection() {
+    // Closed form: a flux q into the base of a slab of height L whose top convects to T∞
+    // (h), sides insulated: T(z) = T∞ + q/h + q (L − z)/k. Linear: exact in the space, so
+    // round-off only (1e-9 of the rise).
+    let (q, h, ambient, k, length) = (
+        5.0,
+        crate::material::film_coefficient(250.0),
+        15.0,
+        50.0,
+        30.0,
+    );
+    let mesh = Mesh::build(vec![block(
+        [[0.0, 0.0], [20.0, 0.0], [20.0, length], [0.0, length]],
+        even(2),
+        even(3),
+        0,
+    )])
+    .unwrap();
+    let mut s = spec(6, vec![steel()]);
+    for piece in pieces(&mesh, "top") {
+        s.edges.push((
+            piece,
+            EdgeCondition::Convection {
+                coefficient: h,
+                ambient,
+            },
+        ));
+    }
+    let body = ConductionBody::new(&mesh, &s).unwrap();
+    let field = body.stationary(&flux(&body, "bottom", q)).unwrap();
+    let rise = q / h + q * length / k;
+    for z in [0.0, 11.0, 30.0] {
+        let exact = ambient + q / h + q * (length - z) / k;
+        let ours = body.value_at(&field, [7.0, z]).unwrap();
+        assert!(
+            (ours - exact).abs() < 1e-9 * rise,
+            "z = {z}: {ours} vs {exact}"
+        );
+    }
+    // What enters at the base leaves at the top.
+    let out = body.heat_out(&field, None);
+    let input = q * 20.0 * 10.0;
+    assert!((out.convected - input).abs() < 1e-9 * input, "{out:?}");
+}

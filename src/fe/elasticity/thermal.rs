@@ -330,4 +330,127 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn thermal_load_is_the_work_of_the_thermal_stress_on_curved_elements() {
+        // For the discrete solution u of a thermal load, a(u, u) = ℓ(u): the strain energy
+        // t∫ ε(u)·D ε(u) dA equals the work t∫ ε(u)·s ΔT dA of the thermal stress. Both are
+        // integrated here at Gauss points, independently of the load's assembly and the
+        // internal modes' recovery, for a temperature with every mode (edge modes of odd
+        // degree on edges of either orientation, internal modes) on elements with an arc.
+        // A wrong column or sign of the load would break the equality; round-off and the
+        // rational maps' quadrature leave 1e-9.
+        use crate::conduction::{ConductionBody, ConductionSpec};
+        use crate::material::ThermalMaterial;
+        use crate::quadrature::gauss_legendre;
+        let p = 5;
+        let block = MeshBlock {
+            block: Block::new(
+                [[0.0, 0.0], [40.0, 0.0], [40.0, 30.0], [0.0, 30.0]],
+                [
+                    EdgeShape::Straight,
+                    EdgeShape::ArcAbout([-20.0, 15.0]),
+                    EdgeShape::Straight,
+                    EdgeShape::Straight,
+                ],
+            )
+            .unwrap(),
+            u_lines: vec![0.0, 0.4, 1.0],
+            v_lines: vec![0.0, 0.5, 1.0],
+            material: 0,
+            edge_names: [None, None, None, None],
+        };
+        let mesh = Mesh::build(vec![block]).unwrap();
+        for analysis in [
+            Analysis::PlaneStress { thickness: 3.0 },
+            Analysis::PlaneStrain { thickness: 3.0 },
+        ] {
+            let dofs = crate::dofs::DofMap::new(&mesh, p);
+            let a = mesh.vertex_at([0.0, 0.0]).unwrap();
+            let b = mesh.vertex_at([0.0, 30.0]).unwrap();
+            let body = ElasticBody::new(
+                "arc",
+                mesh.clone(),
+                vec![STEEL],
+                analysis,
+                Discretisation {
+                    p,
+                    space: Space::TensorProduct,
+                },
+                &Constraints {
+                    fixed: vec![
+                        dofs.vertex_dof(a, 0),
+                        dofs.vertex_dof(a, 1),
+                        dofs.vertex_dof(b, 0),
+                    ],
+                },
+            )
+            .unwrap();
+            let heat = ConductionBody::new(
+                &mesh,
+                &ConductionSpec {
+                    name: "arc".into(),
+                    p,
+                    space: Space::TensorProduct,
+                    thickness: 3.0,
+                    materials: vec![Some(ThermalMaterial::from_engineering(
+                        50.0, 460.0, 7800.0, ALPHA,
+                    ))],
+                    edges: vec![],
+                    faces: None,
+                },
+            )
+            .unwrap();
+            // A conforming field with every coefficient set (a fixed pseudo-random sequence).
+            let mut seed = 12345u64;
+            let field: Vec<f64> = (0..heat.n_full())
+                .map(|_| {
+                    seed = seed
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
+                    ((seed >> 33) as f64 / (1u64 << 31) as f64) * 40.0 - 20.0
+                })
+                .collect();
+            let rise = |e: usize| -> Vec<f64> {
+                heat.element_unknowns(e)
+                    .iter()
+                    .map(|&(g, s)| s * field[g])
+                    .collect()
+            };
+            let loads = body.thermal_loads(&[ALPHA]).unwrap();
+            let load = body.thermal_load_vector(&loads, rise);
+            let mut rhs = faer::Mat::from_fn(load.len(), 1, |i, _| load[i]);
+            body.solve_in_place(&mut rhs).unwrap();
+            let u =
+                body.recover_thermal((0..load.len()).map(|i| rhs[(i, 0)]).collect(), &loads, rise);
+            let rule = gauss_legendre(p + 5);
+            let (mut energy, mut work) = (0.0, 0.0);
+            for element in 0..mesh.elements.len() {
+                let coefficients = rise(element);
+                for (i, &xi) in rule.points.iter().enumerate() {
+                    for (j, &eta) in rule.points.iter().enumerate() {
+                        let (_, det) = mesh.jacobian(element, xi, eta);
+                        let w = rule.weights[i] * rule.weights[j] * det * 3.0;
+                        let v = body.values_at_reference(&u, element, xi, eta);
+                        let tab = body.basis.tabulate(&[xi], &[eta]);
+                        let dt: f64 = coefficients
+                            .iter()
+                            .zip(&tab.values)
+                            .map(|(c, n)| c * n)
+                            .sum();
+                        let s = body.thermal_stress(&loads, element, dt);
+                        for ((e, sigma), th) in v.strain.iter().zip(&v.stress).zip(&s) {
+                            energy += w * e * sigma;
+                            work += w * e * th;
+                        }
+                    }
+                }
+            }
+            assert!(energy > 0.0);
+            assert!(
+                (energy - work).abs() < 1e-9 * energy,
+                "{analysis:?}: {energy} vs {work}"
+            );
+        }
+    }
 }

@@ -93,8 +93,13 @@ pub struct CoupledSystem {
     pub stored: [Output; 2],
     /// Constant vectors of each body (1 on its free unknowns' uniform field).
     constants: [Vec<f64>; 2],
-    /// Whether heat can leave.
+    /// Whether every part of the heat problem can lose heat (K regular).
     pub has_exit: bool,
+    /// Whether frictional heat enters a body that cannot lose it.
+    pub trapped: bool,
+    /// Contact points whose trace on the body receiving their heat touches a held
+    /// temperature (a corner of the contact on a held edge).
+    pub held_points: usize,
     /// Interface conductance, mW/(mm²·K).
     pub conductance: f64,
     /// Péclet numbers.
@@ -115,17 +120,23 @@ pub struct CoupledSystem {
 struct Split {
     free: Vec<(usize, f64)>,
     held: f64,
+    /// Whether some of the trace's unknowns are held.
+    touches_held: bool,
 }
 
 fn split(body: &ConductionBody, held: &[f64], offset: usize, trace: &[(usize, f64)]) -> Split {
     let mut out = Split {
         free: Vec::with_capacity(trace.len()),
         held: 0.0,
+        touches_held: false,
     };
     for &(g, c) in trace {
         match body.free_index(g) {
             Some(f) => out.free.push((offset + f, c)),
-            None => out.held += c * held[g],
+            None => {
+                out.held += c * held[g];
+                out.touches_held |= c != 0.0;
+            }
         }
     }
     out
@@ -135,7 +146,16 @@ fn split(body: &ConductionBody, held: &[f64], offset: usize, trace: &[(usize, f6
 /// numbering is the vector one halved ([`crate::dofs::DofMap::scalar`]), and the shape
 /// function values are the same.
 fn scalar_trace(trace: &crate::contact::Trace) -> Vec<(usize, f64)> {
-    trace.iter().map(|&(g, c)| (g[0] / 2, c)).collect()
+    trace
+        .iter()
+        .map(|&(g, c)| {
+            debug_assert!(
+                g[1] == g[0] + 1 && g[0] % 2 == 0,
+                "a vector DofMap's x, z pair"
+            );
+            (g[0] / 2, c)
+        })
+        .collect()
 }
 
 impl CoupledSystem {
@@ -212,6 +232,13 @@ impl CoupledSystem {
             Partition::Perfect => 1.0,
             Partition::Fraction(f) => f,
         };
+        let held_points = (0..n)
+            .filter(|&i| {
+                [(0, share), (1, 1.0 - share)]
+                    .iter()
+                    .any(|&(b, part)| part > 0.0 && traces[b][i].touches_held)
+            })
+            .count();
         let mut flux = Mat::<f64>::zeros(size, n);
         for i in 0..n {
             for (b, part) in [(0, share), (1, 1.0 - share)] {
@@ -234,9 +261,18 @@ impl CoupledSystem {
             .collect();
         let constants =
             [0, 1].map(|b| body_vector(b, thermal[b].restrict(&thermal[b].uniform(1.0))));
+        // K is regular when every body that is a heat problem of its own can lose heat (one
+        // problem under perfect contact, two with a given share); the frictional heat is
+        // trapped when a body that receives some has no way out.
         let has_exit = match settings.partition {
             Partition::Perfect => thermal[0].has_exit || thermal[1].has_exit,
             Partition::Fraction(_) => thermal[0].has_exit && thermal[1].has_exit,
+        };
+        let trapped = match settings.partition {
+            Partition::Perfect => !has_exit,
+            Partition::Fraction(f) => {
+                (f > 0.0 && !thermal[0].has_exit) || (f < 1.0 && !thermal[1].has_exit)
+            }
         };
         let expansion: Vec<f64> = settings.materials.iter().map(|m| m.expansion).collect();
         let mut loads = Vec::with_capacity(2);
@@ -295,6 +331,8 @@ impl CoupledSystem {
             stored,
             constants,
             has_exit,
+            trapped,
+            held_points,
             conductance,
             peclet,
             area,
@@ -442,6 +480,8 @@ impl ThermalModel {
             shifts: shifts.to_vec(),
             interface_conductance: system.conductance,
             has_exit: system.has_exit,
+            trapped: system.trapped,
+            held_points: system.held_points,
             peclet: system.peclet,
             reference: input.settings.reference,
             seconds: start.elapsed().as_secs_f64(),
@@ -515,9 +555,11 @@ fn conduction_spec(input: &ThermalBodies<'_>, b: usize) -> ConductionSpec {
     }
 }
 
-/// The parts of body 2's contact edge outside the segment between the partners of the first
-/// and the last contact point: element edges wholly outside it, and the end partners'
-/// elements cut at the partner.
+/// The parts of body 2's contact edge that no partner of a contact point lies on: the edge's
+/// element edges are chained end to end, each partner placed on the chain (link i covers
+/// positions i … i + 1), and what lies outside the smallest stretch holding every partner (an
+/// arc of a closed chain, a ring's rim, may hold them across its seam) is uncovered. Judging
+/// by a direction in the plane instead left the far side of a rim insulated.
 fn uncovered_pieces(
     body: &ElasticBody,
     edge: &[(usize, usize)],
@@ -525,44 +567,117 @@ fn uncovered_pieces(
 ) -> Vec<EdgePiece> {
     let mesh = &body.mesh;
     let pts = &contact.points;
-    let last = pts.x.len() - 1;
-    let ends: Vec<(usize, usize, f64)> = [0, last]
-        .iter()
-        .filter_map(|&i| {
-            mesh.cross_edges(edge, pts.x[i], pts.normal[i])
-                .map(|(_, e, l, t)| (e, l, t))
+    let (chain, closed) = chain_of(mesh, edge);
+    let links = chain.len() as f64;
+    let mut positions: Vec<f64> = (0..pts.x.len())
+        .filter_map(|i| {
+            let (_, e, l, t) = mesh.cross_edges(edge, pts.x[i], pts.normal[i])?;
+            let k = chain.iter().position(|&(ce, cl, _)| ce == e && cl == l)?;
+            let along = if chain[k].2 { -t } else { t };
+            Some(k as f64 + 0.5 * (along + 1.0))
         })
         .collect();
-    // Positions along body 1's tangent: the covered segment lies between the end partners.
-    let tangent = pts.tangent[0];
-    let along = |x: Point| x[0] * tangent[0] + x[1] * tangent[1];
-    let (a, b) = (along(pts.partner[0]), along(pts.partner[last]));
-    let (lo, hi) = (a.min(b), a.max(b));
-    let outside = |element: usize, local: usize, t0: f64, t1: f64| {
-        let mid = along(mesh.point_on_edge(element, local, 0.5 * (t0 + t1)));
-        mid < lo || mid > hi
+    if positions.is_empty() {
+        return Vec::new();
+    }
+    positions.sort_by(f64::total_cmp);
+    // The covered stretch [from, to]: on a closed chain the complement of the widest empty
+    // gap between neighbouring partners (the seam's gap included).
+    let (mut from, mut to) = (positions[0], positions[positions.len() - 1]);
+    if closed {
+        let seam = positions[0] + links - to;
+        let widest = positions
+            .windows(2)
+            .enumerate()
+            .map(|(i, w)| (i, w[1] - w[0]))
+            .fold(
+                (usize::MAX, seam),
+                |best, (i, g)| if g > best.1 { (i, g) } else { best },
+            );
+        if widest.0 != usize::MAX {
+            from = positions[widest.0 + 1];
+            to = positions[widest.0] + links;
+        }
+    }
+    let covered = |s: f64| {
+        let wrapped = if closed && s < from { s + links } else { s };
+        wrapped >= from && wrapped <= to
     };
     let mut pieces = Vec::new();
-    for &(element, local) in edge {
-        let mut cuts = vec![-1.0];
-        cuts.extend(
-            ends.iter()
-                .filter(|&&(e, l, _)| e == element && l == local)
-                .map(|&(_, _, t)| t),
-        );
-        cuts.push(1.0);
+    for (k, &(element, local, reversed)) in chain.iter().enumerate() {
+        // Cut the link where the stretch ends inside it.
+        let mut cuts = vec![0.0, 1.0];
+        for end in [from, to] {
+            let local_end = end.rem_euclid(links) - k as f64;
+            if local_end > 0.0 && local_end < 1.0 {
+                cuts.push(local_end);
+            }
+        }
         cuts.sort_by(f64::total_cmp);
         for w in cuts.windows(2) {
-            if w[1] - w[0] > 1e-12 && outside(element, local, w[0], w[1]) {
-                pieces.push(EdgePiece {
-                    element,
-                    local,
-                    t: [w[0], w[1]],
-                });
+            if w[1] - w[0] < 1e-12 || covered(k as f64 + 0.5 * (w[0] + w[1])) {
+                continue;
             }
+            let t = |u: f64| {
+                let along = 2.0 * u - 1.0;
+                if reversed {
+                    -along
+                } else {
+                    along
+                }
+            };
+            let (a, b) = (t(w[0]), t(w[1]));
+            pieces.push(EdgePiece {
+                element,
+                local,
+                t: [a.min(b), a.max(b)],
+            });
         }
     }
     pieces
+}
+
+/// The element edges of `edge` ordered end to end, each with whether it is walked against
+/// its parameter, and whether the chain closes on itself.
+fn chain_of(
+    mesh: &crate::mesh::Mesh,
+    edge: &[(usize, usize)],
+) -> (Vec<(usize, usize, bool)>, bool) {
+    let ends = |&(e, l): &(usize, usize)| {
+        let (a, b) = crate::mesh::EDGE_ENDPOINTS[l];
+        (mesh.elements[e].vertices[a], mesh.elements[e].vertices[b])
+    };
+    let count = |v: usize| {
+        edge.iter()
+            .filter(|x| ends(x).0 == v || ends(x).1 == v)
+            .count()
+    };
+    let mut left: Vec<(usize, usize)> = edge.to_vec();
+    let start = left
+        .iter()
+        .position(|x| count(ends(x).0) == 1 || count(ends(x).1) == 1)
+        .unwrap_or(0);
+    let closed = !left
+        .iter()
+        .any(|x| count(ends(x).0) == 1 || count(ends(x).1) == 1);
+    let first = left.remove(start);
+    let (a, b) = ends(&first);
+    let reversed = count(a) != 1 && count(b) == 1;
+    let mut chain = vec![(first.0, first.1, reversed)];
+    let mut tip = if reversed { a } else { b };
+    while let Some(k) = left
+        .iter()
+        .position(|x| ends(x).0 == tip || ends(x).1 == tip)
+    {
+        let next = left.remove(k);
+        let (a, b) = ends(&next);
+        let reversed = b == tip;
+        tip = if reversed { a } else { b };
+        chain.push((next.0, next.1, reversed));
+    }
+    // Pieces the walk did not reach (an edge in several lines) are appended as they are.
+    chain.extend(left.into_iter().map(|(e, l)| (e, l, false)));
+    (chain, closed)
 }
 
 /// Where each body's largest temperature is looked for: the Lobatto points of its contact
