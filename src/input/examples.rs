@@ -33,6 +33,7 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         include_str!("../../examples/punch-b20-variant2.toml"),
     ),
     ("brake", include_str!("../../examples/brake.toml")),
+    ("brake-heat", include_str!("../../examples/brake-heat.toml")),
     (
         "brake-independent",
         include_str!("../../examples/brake-independent.toml"),
