@@ -85,11 +85,12 @@ fn main() {
         gap_range * 1e3
     );
     println!(
-        "| shifts (× 1/h) | modes | set-up (s) | temperature error / rise | gap error / range |"
+        "| shifts (× 1/h) | modes | set-up (s) | temperature error / rise | gap error / range | after 10 half periods: temperature, gap |"
     );
-    println!("|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|");
     let sets: Vec<Vec<f64>> = vec![
         SHIFTS.to_vec(),
+        vec![1.0 / 1024.0, 1.0 / 64.0, 1.0 / 8.0, 1.0 / 2.0],
         vec![1.0 / 256.0, 1.0 / 16.0, 1.0 / 2.0, 4.0],
         vec![1.0 / 64.0, 1.0, 8.0],
         vec![
