@@ -1,4 +1,4 @@
-//! The periodic steady state with heat (paper §4, its ref. [15]): the worn shape, the
+//! The periodic steady state with heat (paper §4, its ref. \[15\]): the worn shape, the
 //! pressures of both half cycles and the periodic temperature that they make together.
 //!
 //! In the steady state the temperature is periodic too. Each half cycle h sees the shape g
