@@ -43,9 +43,12 @@ use faer::Mat;
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
 
+pub mod advection;
 pub mod blocks;
+pub mod closed_forms;
 pub mod reduced;
 pub mod transient;
+pub use advection::Flow;
 use blocks::{assemble_pair, Block, BlockOperator, PairedMatrices};
 
 /// Errors of the conduction stage.
@@ -134,6 +137,8 @@ pub struct ConductionSpec {
     pub edges: Vec<(EdgePiece, EdgeCondition)>,
     /// Convection from the faces (plane stress only).
     pub faces: Option<FaceConvection>,
+    /// The material's motion through the frame of the heat problem (None: at rest).
+    pub flow: Option<Flow>,
 }
 
 /// One body's heat conduction operators over its free dofs.
@@ -171,6 +176,8 @@ pub struct ConductionBody {
     /// Whether some edge holds or convects or the faces convect: heat can leave.
     pub has_exit: bool,
     n_free: usize,
+    /// The advection blocks (also in the conductivity), for the heat the motion carries out.
+    advection_blocks: Vec<Block>,
 }
 
 /// Element matrices of one element: conductivity (with the face sink), capacity, and the
@@ -315,6 +322,23 @@ impl ConductionBody {
                 matrix: Arc::clone(&matrices.capacity),
             });
         }
+        let mut advection_blocks = Vec::new();
+        if let Some(flow) = &spec.flow {
+            for element in 0..mesh.elements.len() {
+                let m = mesh.elements[element].material;
+                let material = spec.materials[m].expect("checked with the element blocks");
+                advection_blocks.push(advection::element_block(
+                    mesh,
+                    element,
+                    &basis,
+                    &material,
+                    spec.thickness,
+                    flow,
+                    element_unknowns(mesh, &dofs, &basis, element),
+                ));
+            }
+            conductivity_blocks.extend(advection_blocks.iter().cloned());
+        }
         let mut held: Vec<Option<f64>> = vec![None; n_full];
         for (piece, condition) in &spec.edges {
             match *condition {
@@ -391,6 +415,7 @@ impl ConductionBody {
             faces: spec.faces,
             has_exit,
             n_free,
+            advection_blocks,
         })
     }
 
@@ -530,7 +555,12 @@ impl ConductionBody {
                 rhs[f] += flux[i];
             }
         }
-        let solved = transient::solve_spd(self.conductivity(), &rhs).ok_or_else(|| {
+        let solved = if self.advection_blocks.is_empty() {
+            transient::solve_spd(self.conductivity(), &rhs)
+        } else {
+            transient::solve_general(self.conductivity(), &rhs)
+        };
+        let solved = solved.ok_or_else(|| {
             ConductionError::Numerical {
                 body: self.name.clone(),
                 message: "the conductivity matrix is singular: no edge holds a temperature or convects, so the heat cannot leave and there is no stationary temperature".into(),
@@ -623,10 +653,25 @@ impl ConductionBody {
                 held_out -= residual[d] - self.full_load[d];
             }
         }
+        let advected = if self.advection_blocks.is_empty() {
+            0.0
+        } else {
+            let motion = BlockOperator {
+                size: self.n_full(),
+                blocks: self.advection_blocks.clone(),
+            };
+            motion
+                .apply_vector(field)
+                .iter()
+                .zip(self.uniform(1.0))
+                .map(|(a, one)| a * one)
+                .sum()
+        };
         HeatFlows {
             convected,
             faces,
             held: held_out,
+            advected,
         }
     }
 
@@ -671,12 +716,14 @@ pub struct HeatFlows {
     pub faces: f64,
     /// Through edges at a held temperature.
     pub held: f64,
+    /// Carried out by the material's motion (the enthalpy ρc T w·n over the boundary).
+    pub advected: f64,
 }
 
 impl HeatFlows {
     /// All the heat leaving, mW.
     pub fn total(&self) -> f64 {
-        self.convected + self.faces + self.held
+        self.convected + self.faces + self.held + self.advected
     }
 }
 

@@ -62,6 +62,7 @@ fn spec(p: usize, materials: Vec<ThermalMaterial>) -> ConductionSpec {
         materials: materials.into_iter().map(Some).collect(),
         edges: vec![],
         faces: None,
+        flow: None,
     }
 }
 
@@ -370,4 +371,55 @@ fn slab_losing_its_heat_by_convection() {
     let out = body.heat_out(&field, None);
     let input = q * 20.0 * 10.0;
     assert!((out.convected - input).abs() < 1e-9 * input, "{out:?}");
+}
+
+#[test]
+fn moving_band_source_is_jaegers_solution() {
+    // Closed form (e): a band |x| ≤ l of flux q on a half-space flowing past at V (Jaeger
+    // 1942), at Péclet numbers L = V l/(2κ) = 9, 90, 360 and 1800 (the thermal layer under the
+    // band √(2κl/V) from 1.7 mm to 0.12 mm, against a top element 0.1 mm deep). The block's
+    // truncation costs little: heat spreads upstream over κ/V ≤ 0.3 mm and downwards over
+    // √(κ x/V) ≲ 4 mm by the outflow edge, against 25 mm of block either way. The issue asks
+    // 3 % on the maximum. Measured at p = 8 on the surface from x = −8 to 60 mm: within 0.16 %,
+    // 0.6 %, 1.1 %, 1.6 % of the peak (the last two at the band's trailing edge, where the
+    // exact surface temperature falls with an infinite slope), and no undershoot below
+    // −3e-3 of the peak anywhere in the block (Galerkin's wiggles, unstabilised). Bounds 3 %
+    // of the peak and 1 % undershoot leave margin; p = 4 must be the worse.
+    let (q, l) = (40.0, 5.0);
+    let material = steel();
+    let kappa = material.diffusivity();
+    let errors = |p: usize, speed: f64| {
+        let (body, field) = closed_forms::moving_band_case(p, speed, q).unwrap();
+        let exact = |x: f64| {
+            closed_forms::moving_band_temperature(x, q, l, speed, material.conductivity, kappa)
+        };
+        let peak = (0..=100)
+            .map(|i| exact(-l + 2.0 * l * i as f64 / 100.0))
+            .fold(0.0, f64::max);
+        let (mut worst, mut lowest): (f64, f64) = (0.0, 0.0);
+        for i in 0..=136 {
+            let x = -8.0 + 68.0 * i as f64 / 136.0;
+            let ours = body.value_at(&field, [x, 0.0]).unwrap();
+            worst = worst.max((ours - exact(x)).abs());
+            for z in [-0.05, -0.3, -1.0, -3.0, -10.0] {
+                lowest = lowest.min(body.value_at(&field, [x, z]).unwrap());
+            }
+        }
+        // The heat entering on the band (q · 2l · t) leaves through the held edges and with
+        // the material flowing out: a balance of the discrete equations, to round-off.
+        let out = body.heat_out(&field, None);
+        let input = q * 2.0 * l * 10.0;
+        assert!((out.total() - input).abs() < 1e-8 * input, "{out:?}");
+        assert!(out.advected > 0.5 * input, "{out:?}");
+        (worst / peak, -lowest / peak)
+    };
+    for speed in [50.0, 500.0, 2000.0, 10000.0] {
+        let (off, undershoot) = errors(8, speed);
+        assert!(off < 0.03, "V = {speed}: off by {off} of the peak");
+        assert!(
+            undershoot < 0.01,
+            "V = {speed}: undershoot {undershoot} of the peak"
+        );
+    }
+    assert!(errors(4, 50.0).0 > errors(8, 50.0).0);
 }

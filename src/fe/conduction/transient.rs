@@ -108,6 +108,19 @@ pub fn solve_spd(a: &SparseColMat<usize, f64>, b: &[f64]) -> Option<Vec<f64>> {
     x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
+/// Solve A x = b for a sparse A with no symmetry (an advection term), by LU; None if it is
+/// singular.
+pub fn solve_general(a: &SparseColMat<usize, f64>, b: &[f64]) -> Option<Vec<f64>> {
+    use faer::linalg::solvers::Solve;
+    use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
+    let symbolic = SymbolicLu::try_new(a.symbolic()).ok()?;
+    let lu = Lu::try_new_with_symbolic(symbolic, a.as_ref()).ok()?;
+    let mut x = Mat::from_fn(b.len(), 1, |i, _| b[i]);
+    lu.solve_in_place(x.as_mut());
+    let x: Vec<f64> = (0..b.len()).map(|i| x[(i, 0)]).collect();
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
 /// α A + β B for two sparse matrices (of the same size; patterns merged).
 pub fn combine(
     alpha: f64,

@@ -398,6 +398,7 @@ mod tests {
                     ))],
                     edges: vec![],
                     faces: None,
+                    flow: None,
                 },
             )
             .unwrap();

@@ -1,5 +1,5 @@
 //! The validation cases of heat: the closed forms of conduction and thermal strain (the
-//! issue's (a)–(d), (f): Carslaw & Jaeger's slab, semi-infinite body and fin; the free block
+//! issue's (a)–(f): Carslaw & Jaeger's slab, semi-infinite body and fin, Jaeger's moving band; the free block
 //! and the bent strip), the heat balance and the paper's claims on punch-b40-heat. The bounds
 //! are those of the tests that assert the same claims (`src/fe/conduction/tests.rs`,
 //! `src/fe/elasticity/thermal.rs`, `tests/heat.rs`); docs/validation.md gives the reasons.
@@ -7,6 +7,7 @@
 use super::cases::{fail, problem, push, Checks, Outcome};
 use super::Bound;
 use crate::basis::{ModeKind, Space};
+use crate::conduction::closed_forms::{moving_band_case, moving_band_temperature};
 use crate::conduction::reduced::{constant_gain, HeatOperators, ReducedModel};
 use crate::conduction::{ConductionBody, ConductionSpec, EdgeCondition, EdgePiece, FaceConvection};
 use crate::driver;
@@ -80,6 +81,7 @@ fn body(
             materials: vec![Some(steel())],
             edges,
             faces,
+            flow: None,
         },
     )
     .map_err(|e| e.to_string())
@@ -96,7 +98,7 @@ fn flux(body: &ConductionBody, name: &str, q: f64) -> Vec<f64> {
     load
 }
 
-/// (a) the stationary slab, (b) the semi-infinite body, (f) the fin.
+/// (a) the stationary slab, (b) the semi-infinite body, (f) the fin, (e) the moving band.
 pub fn conduction(checks: &mut Checks) -> Outcome {
     let case = "heat.conduction";
     let err = |e: String| fail(case, e);
@@ -209,6 +211,27 @@ pub fn conduction(checks: &mut Checks) -> Outcome {
         "Carslaw & Jaeger §2.9: 2q √(t/(π k ρc))",
         rise,
         Bound::Relative(1e-2),
+    );
+    // (e) A band of 40 mW/mm² on steel flowing past at 2 m/s (Péclet number 360): the peak of
+    // Jaeger's moving band, to the 3 %.
+    let (q, half_width, speed) = (40.0, 5.0, 2000.0);
+    let (band, field) = moving_band_case(8, speed, q).map_err(|e| err(e.to_string()))?;
+    let peak = |f: &dyn Fn(f64) -> f64| {
+        (0..=100)
+            .map(|i| f(-half_width + 2.0 * half_width * i as f64 / 100.0))
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    push(
+        checks,
+        "heat.moving_band",
+        "band source on a half-space moving at 2 m/s (Péclet 360): peak surface rise",
+        "K",
+        peak(&|x| {
+            moving_band_temperature(x, q, half_width, speed, s.conductivity, s.diffusivity())
+        }),
+        "Jaeger (1942), Carslaw & Jaeger §10.7",
+        peak(&|x| band.value_at(&field, [x, 0.0]).unwrap_or(f64::NAN)),
+        Bound::Relative(3e-2),
     );
     Ok(())
 }

@@ -552,6 +552,7 @@ fn conduction_spec(input: &ThermalBodies<'_>, b: usize) -> ConductionSpec {
         materials: settings.materials.iter().map(|m| Some(*m)).collect(),
         edges,
         faces: settings.faces,
+        flow: None,
     }
 }
 
