@@ -139,6 +139,8 @@ pub struct ConductionSpec {
     pub faces: Option<FaceConvection>,
     /// The material's motion through the frame of the heat problem (None: at rest).
     pub flow: Option<Flow>,
+    /// The temperature of the material entering where it flows in, °C (with `flow`).
+    pub inflow_temperature: f64,
 }
 
 /// One body's heat conduction operators over its free dofs.
@@ -176,8 +178,11 @@ pub struct ConductionBody {
     /// Whether some edge holds or convects or the faces convect: heat can leave.
     pub has_exit: bool,
     n_free: usize,
-    /// The advection blocks (also in the conductivity), for the heat the motion carries out.
+    /// The advection and inflow blocks (also in the conductivity), for the heat the motion
+    /// carries out.
     advection_blocks: Vec<Block>,
+    /// The enthalpy the entering material brings at the inflow temperature, mW.
+    inflow_enthalpy: f64,
 }
 
 /// Element matrices of one element: conductivity (with the face sink), capacity, and the
@@ -322,23 +327,11 @@ impl ConductionBody {
                 matrix: Arc::clone(&matrices.capacity),
             });
         }
-        let mut advection_blocks = Vec::new();
-        if let Some(flow) = &spec.flow {
-            for element in 0..mesh.elements.len() {
-                let m = mesh.elements[element].material;
-                let material = spec.materials[m].expect("checked with the element blocks");
-                advection_blocks.push(advection::element_block(
-                    mesh,
-                    element,
-                    &basis,
-                    &material,
-                    spec.thickness,
-                    flow,
-                    element_unknowns(mesh, &dofs, &basis, element),
-                ));
-            }
-            conductivity_blocks.extend(advection_blocks.iter().cloned());
-        }
+        let (advection_blocks, inflow_enthalpy) = match &spec.flow {
+            Some(flow) => advection::flow_blocks(mesh, &dofs, &basis, spec, flow, &mut load),
+            None => (Vec::new(), 0.0),
+        };
+        conductivity_blocks.extend(advection_blocks.iter().cloned());
         let mut held: Vec<Option<f64>> = vec![None; n_full];
         for (piece, condition) in &spec.edges {
             match *condition {
@@ -394,6 +387,7 @@ impl ConductionBody {
             }
         }
         let has_exit = spec.faces.is_some_and(|f| f.coefficient > 0.0)
+            || advection_blocks.len() > mesh.elements.len()
             || spec.edges.iter().any(|(_, c)| match c {
                 EdgeCondition::Temperature(_) => true,
                 EdgeCondition::Convection { coefficient, .. } => *coefficient > 0.0,
@@ -416,6 +410,7 @@ impl ConductionBody {
             has_exit,
             n_free,
             advection_blocks,
+            inflow_enthalpy,
         })
     }
 
@@ -451,6 +446,12 @@ impl ConductionBody {
             let (k, c) = self.free_operators(0, self.n_free);
             assemble_pair(&k, &c)
         })
+    }
+
+    /// Whether K is symmetric: the material is at rest (advection makes K non-symmetric, to
+    /// be factorised by LU).
+    pub fn is_symmetric(&self) -> bool {
+        self.advection_blocks.is_empty()
     }
 
     /// K over the free unknowns (mW/K), both triangles, on the pattern it shares with C.
@@ -555,7 +556,7 @@ impl ConductionBody {
                 rhs[f] += flux[i];
             }
         }
-        let solved = if self.advection_blocks.is_empty() {
+        let solved = if self.is_symmetric() {
             transient::solve_spd(self.conductivity(), &rhs)
         } else {
             transient::solve_general(self.conductivity(), &rhs)
@@ -653,7 +654,7 @@ impl ConductionBody {
                 held_out -= residual[d] - self.full_load[d];
             }
         }
-        let advected = if self.advection_blocks.is_empty() {
+        let advected = if self.is_symmetric() {
             0.0
         } else {
             let motion = BlockOperator {
@@ -665,7 +666,8 @@ impl ConductionBody {
                 .iter()
                 .zip(self.uniform(1.0))
                 .map(|(a, one)| a * one)
-                .sum()
+                .sum::<f64>()
+                - self.inflow_enthalpy
         };
         HeatFlows {
             convected,

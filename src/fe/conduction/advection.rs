@@ -12,9 +12,18 @@
 //! Péclet 360: its extra diffusion is not consistent for p > 1 unless the residual's second
 //! derivatives are kept. The heat the motion carries out is 1ᵀ A T = ∮ ρc T w·n ds, the
 //! enthalpy flux through the boundary (w divergence-free).
+//!
+//! Where the material enters the body (w·n < 0 on a boundary edge: the upstream end of a
+//! strip, the cut of a ring segment) it brings the temperature it had outside, T_in (the
+//! ambient). The condition is Danckwerts': the heat crossing the edge, advected and
+//! conducted, is the enthalpy that enters, ρc (w·n) T − k ∂T/∂n = ρc (w·n) T_in, which in the
+//! weak form is a convection with the film coefficient ρc |w·n|: t ∫ ρc |w·n| N_a N_b ds in K
+//! and t ∫ ρc |w·n| T_in N_a ds in the load. A held temperature on that edge overrides it.
 
 use super::blocks::Block;
+use super::{element_unknowns, piece_quadrature, ConductionSpec, EdgePiece};
 use crate::basis::QuadBasis;
+use crate::dofs::DofMap;
 use crate::geometry::Point;
 use crate::material::ThermalMaterial;
 use crate::mesh::Mesh;
@@ -95,6 +104,84 @@ pub fn element_block(
         unknowns,
         matrix: Arc::new(matrix),
     }
+}
+
+/// The blocks a flow adds to a body's conductivity: the advection block of every element and
+/// the inflow condition of every boundary edge where the material enters; the inflow's
+/// T_in part is added to `load`. Returns the blocks and the enthalpy the inflow brings at
+/// T_in per second, mW (what the outflow takes away beyond it is the heat the motion removes).
+pub(super) fn flow_blocks(
+    mesh: &Mesh,
+    dofs: &DofMap,
+    basis: &QuadBasis,
+    spec: &ConductionSpec,
+    flow: &Flow,
+    load: &mut [f64],
+) -> (Vec<Block>, f64) {
+    let material_of = |element: usize| {
+        spec.materials[mesh.elements[element].material]
+            .expect("the element blocks checked every material")
+    };
+    let mut blocks: Vec<Block> = (0..mesh.elements.len())
+        .map(|element| {
+            element_block(
+                mesh,
+                element,
+                basis,
+                &material_of(element),
+                spec.thickness,
+                flow,
+                element_unknowns(mesh, dofs, basis, element),
+            )
+        })
+        .collect();
+    let mut entering = 0.0;
+    for edge in mesh.edges.iter().filter(|e| e.elements.len() == 1) {
+        let (element, local) = edge.elements[0];
+        let piece = EdgePiece {
+            element,
+            local,
+            t: [-1.0, 1.0],
+        };
+        let heat_capacity = material_of(element).heat_capacity;
+        let trace = basis.edge_trace(local);
+        let unknowns = element_unknowns(mesh, dofs, basis, element);
+        let n = trace.len();
+        let mut matrix = Mat::<f64>::zeros(n, n);
+        let mut vector = vec![0.0; n];
+        // More points than the mass term needs: |w·n| may change slope along a curved edge.
+        for (tp, ds) in piece_quadrature(mesh, &piece, basis.p + 4) {
+            let (_, normal) = mesh.edge_frame(element, local, tp);
+            let w = flow.at(mesh.point_on_edge(element, local, tp));
+            let inflow = -(w[0] * normal[0] + w[1] * normal[1]);
+            if inflow <= 0.0 {
+                continue;
+            }
+            let film = spec.thickness * heat_capacity * inflow * ds;
+            let (xi, eta) = Mesh::edge_reference_point(local, tp);
+            let tab = basis.tabulate(&[xi], &[eta]);
+            for (a, &ma) in trace.iter().enumerate() {
+                vector[a] += film * tab.values[ma];
+                for (b, &mb) in trace.iter().enumerate() {
+                    matrix[(a, b)] += film * tab.values[ma] * tab.values[mb];
+                }
+            }
+        }
+        if vector.iter().all(|&v| v == 0.0) {
+            continue;
+        }
+        let unknowns: Vec<(usize, f64)> = trace.iter().map(|&m| unknowns[m]).collect();
+        for (a, &(g, sign)) in unknowns.iter().enumerate() {
+            load[g] += sign * spec.inflow_temperature * vector[a];
+        }
+        // ∫ N_a summed with the vertex modes' partition of unity: the edge's ∫ ρc|w·n| ds t.
+        entering += spec.inflow_temperature * vector[..2].iter().sum::<f64>();
+        blocks.push(Block {
+            unknowns,
+            matrix: Arc::new(matrix),
+        });
+    }
+    (blocks, entering)
 }
 
 #[cfg(test)]

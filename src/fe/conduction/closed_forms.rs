@@ -100,13 +100,15 @@ const BAND_DEPTHS: [f64; 10] = [25.0, 16.0, 8.0, 4.0, 2.0, 1.0, 0.5, 0.25, 0.1, 
 
 /// The finite-element counterpart of [`moving_band_temperature`] (its check in the tests and
 /// in `wearfem validate`): a steel block −30 ≤ x ≤ 70, −25 ≤ z ≤ 0 mm, 10 mm thick, at degree
-/// `p`, its material flowing in +x at `speed` mm/s, held at 0 °C at its inflow edge and its
-/// base, with a flux `q` (mW/mm²) on the band |x| ≤ 5 mm of its top. Returns the body and its
-/// stationary temperature.
+/// `p`, its material flowing in +x at `speed` mm/s, held at 0 °C at its base and, if
+/// `hold_inflow`, at its inflow edge (else the material enters there at 0 °C: Danckwerts'
+/// condition), with a flux `q` (mW/mm²) on the band |x| ≤ 5 mm of its top. Returns the body
+/// and its stationary temperature.
 pub fn moving_band_case(
     p: usize,
     speed: f64,
     q: f64,
+    hold_inflow: bool,
 ) -> Result<(ConductionBody, Vec<f64>), ConductionError> {
     let (left, right, depth) = (-30.0, 70.0, 25.0);
     let mesh = Mesh::build(vec![MeshBlock {
@@ -140,7 +142,12 @@ pub fn moving_band_case(
             .collect()
     };
     let mut edges = Vec::new();
-    for name in ["left", "bottom"] {
+    let held: &[&str] = if hold_inflow {
+        &["left", "bottom"]
+    } else {
+        &["bottom"]
+    };
+    for &name in held {
         edges.extend(
             pieces(name)
                 .into_iter()
@@ -158,6 +165,7 @@ pub fn moving_band_case(
         edges,
         faces: None,
         flow: Some(Flow::Translation([speed, 0.0])),
+        inflow_temperature: 0.0,
     };
     let body = ConductionBody::new(&mesh, &spec)?;
     let mut load = vec![0.0; body.n_full()];

@@ -111,14 +111,77 @@ pub fn solve_spd(a: &SparseColMat<usize, f64>, b: &[f64]) -> Option<Vec<f64>> {
 /// Solve A x = b for a sparse A with no symmetry (an advection term), by LU; None if it is
 /// singular.
 pub fn solve_general(a: &SparseColMat<usize, f64>, b: &[f64]) -> Option<Vec<f64>> {
-    use faer::linalg::solvers::Solve;
-    use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
-    let symbolic = SymbolicLu::try_new(a.symbolic()).ok()?;
-    let lu = Lu::try_new_with_symbolic(symbolic, a.as_ref()).ok()?;
-    let mut x = Mat::from_fn(b.len(), 1, |i, _| b[i]);
-    lu.solve_in_place(x.as_mut());
-    let x: Vec<f64> = (0..b.len()).map(|i| x[(i, 0)]).collect();
+    let x = SparseFactor::new(a, false)?.solve(b);
     x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// The symbolic factorisation of one pattern: Cholesky's for symmetric matrices, LU's for the
+/// conductivity of a body whose material flows (advection makes it non-symmetric).
+#[derive(Clone)]
+pub enum SparseSymbolic {
+    /// Symmetric positive definite: Cholesky.
+    Spd(SpdSymbolic),
+    /// General: LU with partial pivoting.
+    General(faer::sparse::linalg::solvers::SymbolicLu<usize>),
+}
+
+impl SparseSymbolic {
+    /// The symbolic factorisation of `a`'s pattern for a matrix that is `symmetric` or not.
+    pub fn new(a: &SparseColMat<usize, f64>, symmetric: bool) -> Option<SparseSymbolic> {
+        if symmetric {
+            SpdSymbolic::new(a).map(SparseSymbolic::Spd)
+        } else {
+            faer::sparse::linalg::solvers::SymbolicLu::try_new(a.symbolic())
+                .ok()
+                .map(SparseSymbolic::General)
+        }
+    }
+}
+
+/// A sparse factorisation: Cholesky (symmetric positive definite) or LU (general).
+pub enum SparseFactor {
+    /// Cholesky.
+    Spd(SpdFactor),
+    /// LU.
+    General(faer::sparse::linalg::solvers::Lu<usize, f64>),
+}
+
+impl SparseFactor {
+    /// Factorise `a`, `symmetric` or not; None if it fails (not positive definite, singular).
+    pub fn new(a: &SparseColMat<usize, f64>, symmetric: bool) -> Option<SparseFactor> {
+        Self::with_symbolic(&SparseSymbolic::new(a, symmetric)?, a)
+    }
+
+    /// Factorise `a`, whose pattern is the one `symbolic` was made for.
+    pub fn with_symbolic(
+        symbolic: &SparseSymbolic,
+        a: &SparseColMat<usize, f64>,
+    ) -> Option<SparseFactor> {
+        match symbolic {
+            SparseSymbolic::Spd(s) => SpdFactor::with_symbolic(s, a).map(SparseFactor::Spd),
+            SparseSymbolic::General(s) => {
+                faer::sparse::linalg::solvers::Lu::try_new_with_symbolic(s.clone(), a.as_ref())
+                    .ok()
+                    .map(SparseFactor::General)
+            }
+        }
+    }
+
+    /// Solve in place for every column of `rhs`.
+    pub fn solve_in_place(&self, rhs: &mut Mat<f64>) {
+        use faer::linalg::solvers::Solve;
+        match self {
+            SparseFactor::Spd(f) => f.solve_in_place(rhs),
+            SparseFactor::General(lu) => lu.solve_in_place(rhs.as_mut()),
+        }
+    }
+
+    /// Solve for one right-hand side.
+    pub fn solve(&self, rhs: &[f64]) -> Vec<f64> {
+        let mut m = Mat::from_fn(rhs.len(), 1, |i, _| rhs[i]);
+        self.solve_in_place(&mut m);
+        (0..rhs.len()).map(|i| m[(i, 0)]).collect()
+    }
 }
 
 /// α A + β B for two sparse matrices (of the same size; patterns merged).
@@ -147,7 +210,7 @@ pub fn combine(
 pub struct Sdirk2 {
     conductivity: SparseColMat<usize, f64>,
     capacity: SparseColMat<usize, f64>,
-    factor: SpdFactor,
+    factor: SparseFactor,
     step: f64,
 }
 
@@ -155,17 +218,29 @@ pub struct Sdirk2 {
 const GAMMA: f64 = 1.0 - std::f64::consts::FRAC_1_SQRT_2;
 
 impl Sdirk2 {
-    /// The stepper of step length `step` (s); None if C + γ h K is not positive definite.
+    /// The stepper of step length `step` (s) for a symmetric conductivity; None if
+    /// C + γ h K is not positive definite.
     pub fn new(
         conductivity: &SparseColMat<usize, f64>,
         capacity: &SparseColMat<usize, f64>,
         step: f64,
     ) -> Option<Sdirk2> {
+        Self::with_symmetry(conductivity, capacity, step, true)
+    }
+
+    /// The stepper of step length `step` (s) for a conductivity that is `symmetric` or not
+    /// (advection); None if C + γ h K cannot be factorised.
+    pub fn with_symmetry(
+        conductivity: &SparseColMat<usize, f64>,
+        capacity: &SparseColMat<usize, f64>,
+        step: f64,
+        symmetric: bool,
+    ) -> Option<Sdirk2> {
         let matrix = combine(1.0, capacity, GAMMA * step, conductivity);
         Some(Sdirk2 {
             conductivity: conductivity.clone(),
             capacity: capacity.clone(),
-            factor: SpdFactor::new(&matrix)?,
+            factor: SparseFactor::new(&matrix, symmetric)?,
             step,
         })
     }

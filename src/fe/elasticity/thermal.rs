@@ -399,6 +399,7 @@ mod tests {
                     edges: vec![],
                     faces: None,
                     flow: None,
+                    inflow_temperature: 0.0,
                 },
             )
             .unwrap();

@@ -82,6 +82,7 @@ fn body(
             edges,
             faces,
             flow: None,
+            inflow_temperature: 0.0,
         },
     )
     .map_err(|e| e.to_string())
@@ -215,7 +216,7 @@ pub fn conduction(checks: &mut Checks) -> Outcome {
     // (e) A band of 40 mW/mm² on steel flowing past at 2 m/s (Péclet number 360): the peak of
     // Jaeger's moving band, to the 3 %.
     let (q, half_width, speed) = (40.0, 5.0, 2000.0);
-    let (band, field) = moving_band_case(8, speed, q).map_err(|e| err(e.to_string()))?;
+    let (band, field) = moving_band_case(8, speed, q, true).map_err(|e| err(e.to_string()))?;
     let peak = |f: &dyn Fn(f64) -> f64| {
         (0..=100)
             .map(|i| f(-half_width + 2.0 * half_width * i as f64 / 100.0))

@@ -553,6 +553,7 @@ fn conduction_spec(input: &ThermalBodies<'_>, b: usize) -> ConductionSpec {
         edges,
         faces: settings.faces,
         flow: None,
+        inflow_temperature: 0.0,
     }
 }
 
