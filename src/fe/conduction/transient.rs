@@ -142,8 +142,8 @@ impl SparseSymbolic {
 pub enum SparseFactor {
     /// Cholesky.
     Spd(SpdFactor),
-    /// LU.
-    General(faer::sparse::linalg::solvers::Lu<usize, f64>),
+    /// LU (boxed: it is several times the size of the Cholesky handle).
+    General(Box<faer::sparse::linalg::solvers::Lu<usize, f64>>),
 }
 
 impl SparseFactor {
@@ -162,7 +162,7 @@ impl SparseFactor {
             SparseSymbolic::General(s) => {
                 faer::sparse::linalg::solvers::Lu::try_new_with_symbolic(s.clone(), a.as_ref())
                     .ok()
-                    .map(SparseFactor::General)
+                    .map(|lu| SparseFactor::General(Box::new(lu)))
             }
         }
     }
