@@ -119,11 +119,6 @@ fn broken_heat_sections_name_their_key() {
             "kind = \"plane_strain\"",
             "heat.faces",
         ),
-        (
-            "sliding = \"reciprocating\"",
-            "sliding = \"monotonic\"\nspeed = 10.0\nstep_time = 1.0",
-            "heat",
-        ),
         // Body 1's contact edge exchanges heat with body 2: it takes no condition.
         (
             "body = \"strip\"\nedge = \"base\"",

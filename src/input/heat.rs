@@ -130,6 +130,9 @@ pub struct HeatSettings {
     pub reference: f64,
     /// Initial temperature, °C.
     pub initial: f64,
+    /// Ambient temperature, °C: of the surroundings, and of the material entering a body
+    /// that moves through the contact (monotonic sliding).
+    pub ambient: f64,
     /// How the frictional heat is shared.
     pub partition: Partition,
     /// Convection from the faces of a plane-stress plate.
@@ -210,14 +213,6 @@ impl Problem {
                 key: "contact.target_body".into(),
                 ..e
             })?;
-        if self
-            .spec
-            .wear
-            .as_ref()
-            .is_some_and(|w| w.sliding == "monotonic")
-        {
-            return Err(self.error("heat", "heat under monotonic sliding needs body 2's material to carry its heat through the contact (advection), which this version does not model yet; heat is available for reciprocating sliding"));
-        }
         let materials = self.thermal_materials([b1, b2])?;
         let condition =
             |key: &str, c: &ConditionSpec| self.condition(key, c, ambient, &temperature);
@@ -263,6 +258,7 @@ impl Problem {
         Ok(Some(HeatSettings {
             reference,
             initial,
+            ambient,
             partition,
             faces,
             materials,

@@ -41,9 +41,37 @@
 //! (N the normal traces of the contact points), the gap of a thermal load f is Xᵀf. Body 1 is
 //! clamped at its plate edge as in the contact's condensation, so the plate's rigid motions
 //! still follow from equilibrium.
+//!
+//! Under monotonic sliding body 2's material moves through the contact
+//! ([`counterface`]): its heat problem carries that motion, K is not symmetric, and the reduced
+//! state is stepped by the exact propagator of each step length instead of in modes
+//! ([`crate::conduction::reduced::propagator`]).
 
 use crate::complementarity::Direction;
 use crate::conduction::reduced::{constant_gain, decay};
+
+/// Column `j` of an owned (column-major) matrix.
+fn column(matrix: &Mat<f64>, j: usize) -> &[f64] {
+    matrix
+        .col(j)
+        .try_as_col_major()
+        .expect("an owned matrix's columns are contiguous")
+        .as_slice()
+}
+
+/// The stationary state M a = g of a flowing body's coupled dynamics; None where M is
+/// singular (a body that keeps its heat: no stationary temperature) or the solve is not
+/// accurate to 1e-8 of g.
+fn stationary(matrix: &Mat<f64>, g: &[f64]) -> Option<Vec<f64>> {
+    use faer::linalg::solvers::Solve;
+    let rhs = Mat::from_fn(g.len(), 1, |i, _| g[i]);
+    let a = matrix.as_ref().partial_piv_lu().solve(&rhs);
+    let residual = matrix * &a - &rhs;
+    let scale = rhs.norm_l2().max(f64::MIN_POSITIVE);
+    let finite = (0..g.len()).all(|i| a[(i, 0)].is_finite());
+    (finite && residual.norm_l2() <= 1e-8 * scale)
+        .then(|| (0..g.len()).map(|i| a[(i, 0)]).collect())
+}
 
 /// Σ_{i<m} e^{−λPi} = (1 − e^{−λPm})/(1 − e^{−λP}), for rate λ (1/s), period P (s): the sum
 /// of m cycles' contributions; m for λ = 0.
@@ -56,8 +84,11 @@ fn geometric_sum(rate: f64, period: f64, m: usize) -> f64 {
     }
 }
 use faer::Mat;
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
 
 mod build;
+pub mod counterface;
 mod outputs;
 pub use build::{CoupledSystem, ThermalBodies, ThermalError, SHIFTS};
 pub use outputs::{GapOutput, Output};
@@ -133,19 +164,40 @@ impl Sliding {
     }
 }
 
+/// (Φ, Γ) of one step length: a ↦ Φ a + Γ b ([`crate::conduction::reduced::propagator`]).
+type Propagator = Arc<(Mat<f64>, Mat<f64>)>;
+
+/// The propagators made so far, by step length in step units.
+type Propagators = Mutex<HashMap<usize, Propagator>>;
+
+/// How the reduced heat state moves in time.
+#[derive(Debug)]
+enum Dynamics {
+    /// Bodies at rest: independent modes, each with its rate λ_j (1/s) and, over one half
+    /// period (one step unit), e^{−λh}, the half-sine gain and the constant source's gain
+    /// ([`crate::conduction::reduced`]).
+    Modal {
+        rates: Vec<f64>,
+        half_period_gains: Vec<(f64, f64, f64)>,
+    },
+    /// A flowing body: ȧ = −M a + b in the C-orthonormal basis, stepped over k step units by
+    /// (Φ, Γ) of that length, made when first needed and kept.
+    Coupled {
+        matrix: Mat<f64>,
+        propagators: Propagators,
+    },
+}
+
 /// The heat problem of a run, reduced and ready to step.
 #[derive(Debug)]
 pub struct ThermalModel {
-    /// λ_j of each mode, 1/s.
-    rates: Vec<f64>,
+    /// How the state moves.
+    dynamics: Dynamics,
     /// Φᵀ F: the modal load of a unit flux density (mW/mm²) at each contact point
     /// (modes × points).
     flux_modal: Mat<f64>,
     /// Φᵀ f₀: the modal load of the constant sources (ambient, held edges), mW.
     source_modal: Vec<f64>,
-    /// Per mode, over one half period (one step unit): e^{−λh}, the half-sine gain and the
-    /// constant source's gain ([`crate::conduction::reduced`]).
-    half_period_gains: Vec<(f64, f64, f64)>,
     /// The modal coordinates of the initial field.
     initial: Vec<f64>,
     /// The thermal gap u_n⁽²⁾ − u_n⁽¹⁾ at each contact point, mm.
@@ -291,13 +343,48 @@ impl ThermalModel {
             cycle_time: 0.0,
             last_heat: [0.0; 2],
             first_k: 0,
-            scratch: vec![0.0; self.rates.len()],
+            scratch: vec![0.0; self.modes()],
         }
     }
 
     /// Number of modes.
     pub fn modes(&self) -> usize {
-        self.rates.len()
+        self.initial.len()
+    }
+
+    /// The rates and half-period gains of the modes. Only a body at rest has modes, and only
+    /// monotonic sliding moves a body's material through the contact, so reciprocating
+    /// sliding always finds them.
+    fn modal(&self) -> (&[f64], &[(f64, f64, f64)]) {
+        match &self.dynamics {
+            Dynamics::Modal {
+                rates,
+                half_period_gains,
+            } => (rates, half_period_gains),
+            Dynamics::Coupled { .. } => {
+                unreachable!("reciprocating sliding moves no material through the contact")
+            }
+        }
+    }
+
+    /// Φ and Γ of `k` step units of a flowing body's coupled dynamics `matrix`.
+    fn propagator(&self, matrix: &Mat<f64>, propagators: &Propagators, k: usize) -> Propagator {
+        // A poisoned lock only means another thread panicked while inserting: the map is
+        // still a map of finished propagators.
+        let mut cache = propagators.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(found) = cache.get(&k) {
+            return Arc::clone(found);
+        }
+        let single = Arc::clone(cache.entry(1).or_insert_with(|| {
+            let time = self.sliding.half_period();
+            Arc::new(crate::conduction::reduced::propagator(
+                matrix.as_ref(),
+                time,
+            ))
+        }));
+        let pair = Arc::new(crate::conduction::reduced::propagator_power(&single, k));
+        cache.insert(k, Arc::clone(&pair));
+        pair
     }
 
     /// The thermal gap (mm) of `state` into `out`.
@@ -334,11 +421,8 @@ impl ThermalModel {
             Sliding::Reciprocating { amplitude, omega } => amplitude * omega,
             Sliding::Monotonic { speed, .. } => speed,
         };
-        for ((o, &(_, sine, constant)), s) in out
-            .iter_mut()
-            .zip(&self.half_period_gains)
-            .zip(&self.source_modal)
-        {
+        let (_, gains) = self.modal();
+        for ((o, &(_, sine, constant)), s) in out.iter_mut().zip(gains).zip(&self.source_modal) {
             *o = sine * speed * *o + constant * s;
         }
     }
@@ -357,9 +441,10 @@ impl ThermalModel {
     ) {
         let h = self.sliding.half_period();
         let pairs = halves / 2;
-        for j in 0..self.rates.len() {
-            let rate = self.rates[j];
-            let e = self.half_period_gains[j].0;
+        let (rates, gains) = self.modal();
+        for j in 0..rates.len() {
+            let rate = rates[j];
+            let e = gains[j].0;
             let mut a = from[j];
             if pairs > 0 {
                 a = decay(rate, 2.0 * h * pairs as f64) * a
@@ -444,13 +529,32 @@ impl ThermalModel {
                 let time = step_time * k as f64;
                 state.cycle_generated += heat * speed * time;
                 state.generated = state.cycle_generated;
-                for ((a, &rate), (f, s)) in state
-                    .a
-                    .iter_mut()
-                    .zip(&self.rates)
-                    .zip(increment.iter().zip(&self.source_modal))
-                {
-                    *a = decay(rate, time) * *a + constant_gain(rate, time) * (speed * f + s);
+                for (f, s) in increment.iter_mut().zip(&self.source_modal) {
+                    *f = speed * *f + s;
+                }
+                match &self.dynamics {
+                    Dynamics::Modal { rates, .. } => {
+                        for ((a, &rate), f) in state.a.iter_mut().zip(rates).zip(&increment) {
+                            *a = decay(rate, time) * *a + constant_gain(rate, time) * f;
+                        }
+                    }
+                    Dynamics::Coupled {
+                        matrix,
+                        propagators,
+                    } => {
+                        let pair = self.propagator(matrix, propagators, k);
+                        let (phi, gamma) = (&pair.0, &pair.1);
+                        // a ← Φ a + Γ g, column by column (the matrices are column-major).
+                        let mut next = vec![0.0; state.a.len()];
+                        for (j, (&aj, &gj)) in state.a.iter().zip(&increment).enumerate() {
+                            for ((n, p), g) in
+                                next.iter_mut().zip(column(phi, j)).zip(column(gamma, j))
+                            {
+                                *n += p * aj + g * gj;
+                            }
+                        }
+                        state.a.copy_from_slice(&next);
+                    }
                 }
                 state.cycle.copy_from_slice(&state.a);
                 state.cycle_time += time;
@@ -595,7 +699,7 @@ impl ThermalModel {
     /// body that cannot lose heat) keeps its initial value if a period brings it no net heat;
     /// if one does, its temperature rises for ever and there is no periodic state: None.
     pub fn periodic_state(&self, p_plus: &[f64], p_minus: &[f64]) -> Option<[Vec<f64>; 2]> {
-        let r = self.rates.len();
+        let r = self.modes();
         let mut plus = vec![0.0; r];
         let mut minus = vec![0.0; r];
         self.modal_flux(p_plus, &mut plus);
@@ -605,29 +709,38 @@ impl ThermalModel {
                 let speed = amplitude * omega;
                 let mut start_plus = vec![0.0; r];
                 let mut start_minus = vec![0.0; r];
+                let (rates, gains) = self.modal();
                 for j in 0..r {
-                    let (e, sine, constant) = self.half_period_gains[j];
+                    let (e, sine, constant) = gains[j];
                     let source = constant * self.source_modal[j];
                     let g_plus = sine * speed * plus[j] + source;
                     let g_minus = sine * speed * minus[j] + source;
                     start_plus[j] = (e * g_plus + g_minus)
-                        / (-(-2.0 * self.rates[j] * self.sliding.half_period()).exp_m1());
+                        / (-(-2.0 * rates[j] * self.sliding.half_period()).exp_m1());
                     start_minus[j] = e * start_plus[j] + g_plus;
                 }
                 Some([start_plus, start_minus])
             }
             Sliding::Monotonic { speed, .. } => {
-                let mut a = vec![0.0; r];
-                for j in 0..r {
-                    let g = speed * plus[j] + self.source_modal[j];
-                    a[j] = if self.rates[j] > 0.0 {
-                        g / self.rates[j]
-                    } else if g.abs() <= 1e-9 * (g.abs() + self.initial[j].abs()) {
-                        self.initial[j]
-                    } else {
-                        return None;
-                    };
-                }
+                let g: Vec<f64> = (0..r)
+                    .map(|j| speed * plus[j] + self.source_modal[j])
+                    .collect();
+                let a = match &self.dynamics {
+                    Dynamics::Modal { rates, .. } => {
+                        let mut a = vec![0.0; r];
+                        for j in 0..r {
+                            a[j] = if rates[j] > 0.0 {
+                                g[j] / rates[j]
+                            } else if g[j].abs() <= 1e-9 * (g[j].abs() + self.initial[j].abs()) {
+                                self.initial[j]
+                            } else {
+                                return None;
+                            };
+                        }
+                        a
+                    }
+                    Dynamics::Coupled { matrix, .. } => stationary(matrix, &g)?,
+                };
                 Some([a.clone(), a])
             }
         }

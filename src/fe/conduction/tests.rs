@@ -282,6 +282,7 @@ fn semi_infinite_surface_rise() {
         conductivity: &conductivity,
         capacity: &capacity,
         matrices: body.matrices(),
+        symmetric: true,
     };
     let model = ReducedModel::new(operators, inputs.as_ref(), &shifts, &[]).unwrap();
     let modal = model.project(inputs.as_ref());

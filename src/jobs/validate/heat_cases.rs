@@ -180,6 +180,7 @@ pub fn conduction(checks: &mut Checks) -> Outcome {
         conductivity: &conductivity,
         capacity: &capacity,
         matrices: deep.matrices(),
+        symmetric: true,
     };
     let shifts = [0.0, 0.1, 1.0, 3.0, 10.0, 30.0, 100.0];
     let model = ReducedModel::new(operators, inputs.as_ref(), &shifts, &[])
