@@ -35,6 +35,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
     ("brake", include_str!("../../examples/brake.toml")),
     ("brake-heat", include_str!("../../examples/brake-heat.toml")),
     (
+        "brake-drag-heat",
+        include_str!("../../examples/brake-drag-heat.toml"),
+    ),
+    (
         "brake-independent",
         include_str!("../../examples/brake-independent.toml"),
     ),

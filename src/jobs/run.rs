@@ -32,6 +32,9 @@ pub struct WearRun {
     pub records_past_end: Vec<usize>,
     /// Sliding distance of one half period (monotonic: of one step unit), mm.
     pub sliding_per_half_period: f64,
+    /// Whether the sliding is monotonic: the steps' `half_period` counts step units
+    /// (`wear.step_time` each) then.
+    pub monotonic: bool,
     /// The last cycle against the steady state of the same problem (not in `run_seconds`).
     pub steady_check: super::steady_check::SteadyCheck,
     /// `wear.shape_zero_at` (mm): the reported wear is relative to the wear there.
@@ -153,6 +156,7 @@ pub fn wear_until(
         run_seconds,
         records_past_end,
         sliding_per_half_period: integrator.sliding_per_half_period(),
+        monotonic: integrator.is_monotonic(),
         steady_check,
         shape_zero_at: spec.shape_zero_at,
         warnings: std::sync::OnceLock::new(),
@@ -163,6 +167,16 @@ pub fn wear_until(
 }
 
 impl WearRun {
+    /// The label of the figures' time axis: half periods, or the step units of monotonic
+    /// sliding.
+    pub fn time_axis(&self) -> &'static str {
+        if self.monotonic {
+            "step units (wear.step_time each)"
+        } else {
+            "half periods"
+        }
+    }
+
     /// Every warning about this run ([`run_warnings`]; its checks cost a few contact solves,
     /// made once): the console's warning lines and summary.json's `warnings`.
     /// With the check of the resolution in p ([`crate::p_check`]) unless `analysis.p_check`

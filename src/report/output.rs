@@ -299,7 +299,7 @@ pub fn write_wear(
     line_plot(
         &path,
         &format!("{name}: pressure at the probes, '+' half cycles"),
-        "half periods",
+        run.time_axis(),
         "pressure (MPa)",
         &series,
     )

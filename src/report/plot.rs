@@ -352,7 +352,7 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
     }
     let figure = Figure {
         title: format!("{name}: wear dissipation per half period"),
-        x_label: "half periods",
+        x_label: run.time_axis(),
         y_label: "wear dissipation (N·mm)",
         series,
         log_y: false,
@@ -366,7 +366,7 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
         .collect();
     let figure = Figure {
         title: format!("{name}: non-uniformity of the cycle's wear, δw"),
-        x_label: "half periods",
+        x_label: run.time_axis(),
         y_label: "δw (mm)",
         series: vec![Series {
             label: "δw = max (Δw − min Δw) over the cycle (eq. 40)",

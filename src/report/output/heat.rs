@@ -64,7 +64,7 @@ pub fn write_heat(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Resul
     line_plot(
         &path,
         &format!("{name}: temperature at the end of each step"),
-        "half periods",
+        run.time_axis(),
         "temperature (°C)",
         &series,
     )
