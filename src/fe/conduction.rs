@@ -37,19 +37,22 @@ use crate::dofs::DofMap;
 use crate::geometry::Point;
 use crate::material::ThermalMaterial;
 use crate::mesh::Mesh;
-use crate::quadrature::gauss_legendre;
 use faer::sparse::SparseColMat;
-use faer::Mat;
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
 
 pub mod advection;
+mod balance;
 pub mod blocks;
 pub mod closed_forms;
+mod element;
 pub mod reduced;
 pub mod transient;
 pub use advection::Flow;
+pub use balance::HeatFlows;
 use blocks::{assemble_pair, Block, BlockOperator, PairedMatrices};
+pub use element::piece_quadrature;
+use element::{convection_block, element_matrices, element_unknowns, ElementMatrices};
 
 /// Errors of the conduction stage.
 #[derive(Debug, thiserror::Error)]
@@ -183,88 +186,6 @@ pub struct ConductionBody {
     advection_blocks: Vec<Block>,
     /// The enthalpy the entering material brings at the inflow temperature, mW.
     inflow_enthalpy: f64,
-}
-
-/// Element matrices of one element: conductivity (with the face sink), capacity, and the
-/// face load per unit ambient temperature, over the element's modes.
-struct ElementMatrices {
-    conductivity: Arc<Mat<f64>>,
-    capacity: Arc<Mat<f64>>,
-    /// ∫ N_a dA · t (mm³), for the face load and the stored heat.
-    volume: Vec<f64>,
-}
-
-fn element_matrices(
-    mesh: &Mesh,
-    element: usize,
-    basis: &QuadBasis,
-    material: &ThermalMaterial,
-    thickness: f64,
-    face_coefficient: f64,
-    nq: usize,
-) -> ElementMatrices {
-    let rule = gauss_legendre(nq);
-    let tab = basis.tabulate(&rule.points, &rule.points);
-    let n = basis.n_modes();
-    let n_points = nq * nq;
-    let mut gx = Mat::<f64>::zeros(n, n_points);
-    let mut gz = Mat::<f64>::zeros(n, n_points);
-    let mut nv = Mat::<f64>::zeros(n, n_points);
-    let mut volume = vec![0.0; n];
-    for iy in 0..nq {
-        for ix in 0..nq {
-            let q = iy * nq + ix;
-            let (j, det) = mesh.jacobian(element, rule.points[ix], rule.points[iy]);
-            let w = rule.weights[ix] * rule.weights[iy] * det;
-            let scale = w.sqrt();
-            let (dxi_dx, dxi_dz) = (j[1][1] / det, -j[0][1] / det);
-            let (deta_dx, deta_dz) = (-j[1][0] / det, j[0][0] / det);
-            for a in 0..n {
-                let idx = a * n_points + q;
-                let (nxi, neta) = (tab.d_xi[idx], tab.d_eta[idx]);
-                gx[(a, q)] = (nxi * dxi_dx + neta * deta_dx) * scale;
-                gz[(a, q)] = (nxi * dxi_dz + neta * deta_dz) * scale;
-                nv[(a, q)] = tab.values[idx] * scale;
-                volume[a] += tab.values[idx] * w * thickness;
-            }
-        }
-    }
-    let gradients = &gx * gx.transpose() + &gz * gz.transpose();
-    let mass = &nv * nv.transpose();
-    let conductivity = Mat::from_fn(n, n, |a, b| {
-        thickness * material.conductivity * gradients[(a, b)]
-            + 2.0 * face_coefficient * mass[(a, b)]
-    });
-    let capacity = Mat::from_fn(n, n, |a, b| {
-        thickness * material.heat_capacity * mass[(a, b)]
-    });
-    ElementMatrices {
-        conductivity: Arc::new(conductivity),
-        capacity: Arc::new(capacity),
-        volume,
-    }
-}
-
-/// The full unknown of each of an element's modes, with its sign.
-fn element_unknowns(
-    mesh: &Mesh,
-    dofs: &DofMap,
-    basis: &QuadBasis,
-    element: usize,
-) -> Vec<(usize, f64)> {
-    let ed = dofs.element_dofs(mesh, element);
-    let nb = basis.n_boundary();
-    let ni = basis.n_internal();
-    let first_internal = dofs.n_dofs() + element * ni;
-    (0..basis.n_modes())
-        .map(|a| {
-            if a < nb {
-                (ed.global[a], ed.sign[a])
-            } else {
-                (first_internal + a - nb, 1.0)
-            }
-        })
-        .collect()
 }
 
 /// y += A x for a sparse matrix stored in full (both triangles).
@@ -579,204 +500,6 @@ impl ConductionBody {
             }
         }
         load
-    }
-
-    /// The heat (mJ) stored per kelvin of each full unknown: C 1, so that the heat stored in
-    /// a field T relative to a uniform T_ref is (C 1)·(T − T_ref 1).
-    pub fn heat_content_weights(&self) -> Vec<f64> {
-        self.full_capacity().apply_vector(&self.uniform(1.0))
-    }
-
-    fn full_capacity(&self) -> BlockOperator {
-        BlockOperator {
-            size: self.n_full(),
-            blocks: self.capacity_blocks.clone(),
-        }
-    }
-
-    /// The element's modes as (full unknown, sign) pairs, in the basis's mode order.
-    pub fn element_unknowns(&self, element: usize) -> Vec<(usize, f64)> {
-        element_unknowns(&self.mesh, &self.dofs, &self.basis, element)
-    }
-
-    /// Heat stored in `field` relative to the uniform temperature `reference` (mJ):
-    /// t ∫ ρc (T − T_ref) dA.
-    pub fn stored_heat(&self, field: &[f64], reference: f64) -> f64 {
-        let uniform = self.uniform(reference);
-        self.heat_content_weights()
-            .iter()
-            .zip(field.iter().zip(&uniform))
-            .map(|(c, (t, r))| c * (t - r))
-            .sum()
-    }
-
-    /// Heat flowing out of the body (mW) at temperature `field` (full, °C): through
-    /// convecting edges and faces, and through held edges (the reaction at the held
-    /// unknowns: the residual of K T − f there, plus C Ṫ for a transient, `rate` being dT/dt
-    /// in K/s per full unknown). Frictional heat is not counted: it enters the free unknowns.
-    pub fn heat_out(&self, field: &[f64], rate: Option<&[f64]>) -> HeatFlows {
-        let mut convected = 0.0;
-        for (piece, condition) in &self.edges {
-            if let EdgeCondition::Convection {
-                coefficient,
-                ambient,
-            } = *condition
-            {
-                for (tp, ds) in piece_quadrature(&self.mesh, piece, self.basis.p + 2) {
-                    let t: f64 = self
-                        .edge_trace(piece.element, piece.local, tp)
-                        .iter()
-                        .map(|&(g, c)| c * field[g])
-                        .sum();
-                    convected += coefficient * (t - ambient) * ds * self.thickness;
-                }
-            }
-        }
-        let faces = self.faces.map_or(0.0, |f| self.face_loss(field, f));
-        let full_conductivity = BlockOperator {
-            size: self.n_full(),
-            blocks: self.conductivity_blocks.clone(),
-        };
-        let mut residual = full_conductivity.apply_vector(field);
-        if let Some(rate) = rate {
-            for (r, c) in residual
-                .iter_mut()
-                .zip(self.full_capacity().apply_vector(rate))
-            {
-                *r += c;
-            }
-        }
-        let mut held_out = 0.0;
-        for v in 0..self.mesh.vertices.len() {
-            let d = self.dofs.vertex_dof(v, 0);
-            if self.held[d].is_some() {
-                // The reaction is the heat the held edge supplies; it leaves when negative.
-                held_out -= residual[d] - self.full_load[d];
-            }
-        }
-        let advected = if self.is_symmetric() {
-            0.0
-        } else {
-            let motion = BlockOperator {
-                size: self.n_full(),
-                blocks: self.advection_blocks.clone(),
-            };
-            motion
-                .apply_vector(field)
-                .iter()
-                .zip(self.uniform(1.0))
-                .map(|(a, one)| a * one)
-                .sum::<f64>()
-                - self.inflow_enthalpy
-        };
-        HeatFlows {
-            convected,
-            faces,
-            held: held_out,
-            advected,
-        }
-    }
-
-    /// Heat lost through both faces (mW): 2 h_f ∫ (T − T∞) dA.
-    fn face_loss(&self, field: &[f64], faces: FaceConvection) -> f64 {
-        let mut loss = 0.0;
-        for element in 0..self.mesh.elements.len() {
-            let nq = crate::elasticity::quadrature_points(&self.mesh, element, self.basis.p);
-            let rule = gauss_legendre(nq);
-            let tab = self.basis.tabulate(&rule.points, &rule.points);
-            let unknowns = element_unknowns(&self.mesh, &self.dofs, &self.basis, element);
-            for iy in 0..nq {
-                for ix in 0..nq {
-                    let q = iy * nq + ix;
-                    let (_, det) = self
-                        .mesh
-                        .jacobian(element, rule.points[ix], rule.points[iy]);
-                    let t: f64 = unknowns
-                        .iter()
-                        .enumerate()
-                        .map(|(a, &(g, s))| s * tab.values[a * tab.n_points + q] * field[g])
-                        .sum();
-                    loss += 2.0
-                        * faces.coefficient
-                        * (t - faces.ambient)
-                        * rule.weights[ix]
-                        * rule.weights[iy]
-                        * det;
-                }
-            }
-        }
-        loss
-    }
-}
-
-/// Heat leaving a body, mW.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct HeatFlows {
-    /// Through convecting edges.
-    pub convected: f64,
-    /// Through the faces of a plane-stress plate.
-    pub faces: f64,
-    /// Through edges at a held temperature.
-    pub held: f64,
-    /// Carried out by the material's motion (the enthalpy ρc T w·n over the boundary).
-    pub advected: f64,
-}
-
-impl HeatFlows {
-    /// All the heat leaving, mW.
-    pub fn total(&self) -> f64 {
-        self.convected + self.faces + self.held + self.advected
-    }
-}
-
-/// Gauss points (t, ds) on an edge piece: `n` points, ds the arc-length weight in mm.
-pub fn piece_quadrature(mesh: &Mesh, piece: &EdgePiece, n: usize) -> Vec<(f64, f64)> {
-    let rule = gauss_legendre(n);
-    let half = 0.5 * (piece.t[1] - piece.t[0]);
-    rule.points
-        .iter()
-        .zip(&rule.weights)
-        .map(|(&r, &w)| {
-            let t = piece.t[0] + half * (r + 1.0);
-            let (tangent, _) = mesh.edge_frame(piece.element, piece.local, t);
-            (t, w * half * tangent[0].hypot(tangent[1]))
-        })
-        .collect()
-}
-
-/// An edge piece's convection t h ∫ N_a N_b ds as a block of K, with t h T∞ ∫ N_a ds added
-/// to `load`; `th` = t h (mW/(mm·K)).
-fn convection_block(
-    mesh: &Mesh,
-    dofs: &DofMap,
-    basis: &QuadBasis,
-    piece: &EdgePiece,
-    th: f64,
-    ambient: f64,
-    load: &mut [f64],
-) -> Block {
-    let trace = basis.edge_trace(piece.local);
-    let element = element_unknowns(mesh, dofs, basis, piece.element);
-    let n = trace.len();
-    let mut matrix = Mat::<f64>::zeros(n, n);
-    let mut vector = vec![0.0; n];
-    for (tp, ds) in piece_quadrature(mesh, piece, basis.p + 2) {
-        let (xi, eta) = Mesh::edge_reference_point(piece.local, tp);
-        let tab = basis.tabulate(&[xi], &[eta]);
-        for (a, &ma) in trace.iter().enumerate() {
-            vector[a] += tab.values[ma] * ds;
-            for (b, &mb) in trace.iter().enumerate() {
-                matrix[(a, b)] += th * tab.values[ma] * tab.values[mb] * ds;
-            }
-        }
-    }
-    let unknowns: Vec<(usize, f64)> = trace.iter().map(|&m| element[m]).collect();
-    for (a, &(g, s)) in unknowns.iter().enumerate() {
-        load[g] += s * th * ambient * vector[a];
-    }
-    Block {
-        unknowns,
-        matrix: Arc::new(matrix),
     }
 }
 

@@ -4,6 +4,7 @@
 use super::reduced::{constant_gain, HeatOperators, ReducedModel};
 use super::transient::Sdirk2;
 use super::*;
+use faer::Mat;
 use crate::geometry::{Block, EdgeShape};
 use crate::mesh::MeshBlock;
 use crate::quadrature::gauss_lobatto;
