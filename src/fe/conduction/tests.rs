@@ -4,10 +4,10 @@
 use super::reduced::{constant_gain, HeatOperators, ReducedModel};
 use super::transient::Sdirk2;
 use super::*;
-use faer::Mat;
 use crate::geometry::{Block, EdgeShape};
 use crate::mesh::MeshBlock;
 use crate::quadrature::gauss_lobatto;
+use faer::Mat;
 
 /// Steel, the data: 50 W/(m·K), 460 J/(kg·K), 7800 kg/m³.
 fn steel() -> ThermalMaterial {
