@@ -52,6 +52,7 @@ use faer::Mat;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
+mod bodies;
 mod build;
 pub mod counterface;
 mod outputs;
