@@ -114,6 +114,26 @@ pub struct EdgePiece {
     pub t: [f64; 2],
 }
 
+impl EdgePiece {
+    /// The whole local edge `local` of `element`.
+    pub fn whole(element: usize, local: usize) -> EdgePiece {
+        EdgePiece {
+            element,
+            local,
+            t: [-1.0, 1.0],
+        }
+    }
+
+    /// Every element edge of the mesh's edge named `name`, whole (none if there is no such
+    /// name).
+    pub fn named(mesh: &Mesh, name: &str) -> Vec<EdgePiece> {
+        mesh.named_edges
+            .get(name)
+            .map(|edges| edges.iter().map(|&(e, l)| EdgePiece::whole(e, l)).collect())
+            .unwrap_or_default()
+    }
+}
+
 /// Convection from both faces of a plane-stress plate: a sink 2h/t (T − T∞) per unit volume.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FaceConvection {

@@ -418,14 +418,7 @@ impl Problem {
                 None => other,
             };
             if let Some(c) = condition {
-                edges.push((
-                    EdgePiece {
-                        element,
-                        local,
-                        t: [-1.0, 1.0],
-                    },
-                    c,
-                ));
+                edges.push((EdgePiece::whole(element, local), c));
             }
         }
         Ok(BodyHeat {

@@ -138,11 +138,7 @@ pub(super) fn flow_blocks(
     let mut entering = 0.0;
     for edge in mesh.edges.iter().filter(|e| e.elements.len() == 1) {
         let (element, local) = edge.elements[0];
-        let piece = EdgePiece {
-            element,
-            local,
-            t: [-1.0, 1.0],
-        };
+        let piece = EdgePiece::whole(element, local);
         let heat_capacity = material_of(element).heat_capacity;
         let trace = basis.edge_trace(local);
         let unknowns = element_unknowns(mesh, dofs, basis, element);

@@ -131,16 +131,7 @@ pub fn moving_band_case(
         ],
     }])
     .expect("the band block's mesh lines are ordered");
-    let pieces = |name: &str| -> Vec<EdgePiece> {
-        mesh.named_edges[name]
-            .iter()
-            .map(|&(element, local)| EdgePiece {
-                element,
-                local,
-                t: [-1.0, 1.0],
-            })
-            .collect()
-    };
+    let pieces = |name: &str| EdgePiece::named(&mesh, name);
     let mut edges = Vec::new();
     let held: &[&str] = if hold_inflow {
         &["left", "bottom"]

@@ -44,14 +44,7 @@ fn even(n: usize) -> Vec<f64> {
 }
 
 fn pieces(mesh: &Mesh, name: &str) -> Vec<EdgePiece> {
-    mesh.named_edges[name]
-        .iter()
-        .map(|&(element, local)| EdgePiece {
-            element,
-            local,
-            t: [-1.0, 1.0],
-        })
-        .collect()
+    EdgePiece::named(mesh, name)
 }
 
 fn spec(p: usize, materials: Vec<ThermalMaterial>) -> ConductionSpec {

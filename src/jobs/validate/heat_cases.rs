@@ -54,14 +54,7 @@ fn even(n: usize) -> Vec<f64> {
 }
 
 fn pieces(mesh: &Mesh, name: &str) -> Vec<EdgePiece> {
-    mesh.named_edges[name]
-        .iter()
-        .map(|&(element, local)| EdgePiece {
-            element,
-            local,
-            t: [-1.0, 1.0],
-        })
-        .collect()
+    EdgePiece::named(mesh, name)
 }
 
 /// A body of steel on `mesh` at p = 8 with `edges` and `faces`, thickness `t` mm.
