@@ -10,7 +10,9 @@ use std::collections::HashMap;
 
 mod align;
 mod checks;
+pub mod lines;
 use checks::check_lines;
+pub use lines::{equal_lines, graded_lines};
 
 /// Errors found while building a mesh.
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]

@@ -81,17 +81,35 @@ impl OneOrTwo {
     }
 }
 
-/// Mesh lines along one block direction: a number of equal divisions or explicit parameters.
+/// Mesh lines along one block direction: a number of equal divisions, explicit parameters, or
+/// a graded division.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(
     untagged,
-    expecting = "a whole number of equal divisions, or a list of rising parameters from 0 to 1"
+    expecting = "a whole number of equal divisions, a list of rising parameters from 0 to 1, or a table { n = 20, ratio = 1.15 } (with both_ends = true to grade towards both ends)"
 )]
 pub enum LinesSpec {
     /// Equal divisions.
     Count(usize),
     /// Parameters in [0, 1], rising, 0 and 1 included.
     List(Vec<f64>),
+    /// Graded divisions.
+    Graded(GradedLines),
+}
+
+/// `{ n = 20, ratio = 1.15 }`: n divisions, each `ratio` times the one before it from the
+/// block's first corner along the direction; `both_ends = true` grades from both ends towards
+/// the middle instead.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct GradedLines {
+    /// Number of divisions.
+    pub n: usize,
+    /// Size of each division over the one before it (> 0).
+    pub ratio: f64,
+    /// Fine at both ends, growing by `ratio` towards the middle.
+    #[serde(default)]
+    pub both_ends: bool,
 }
 
 /// An arc edge of a block.

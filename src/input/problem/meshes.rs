@@ -268,8 +268,26 @@ impl Problem {
                     LinesSpec::Count(n) if *n > 10_000 => {
                         Err(self.error(key(field), format!("{n} divisions is too many")))
                     }
-                    LinesSpec::Count(n) => Ok((0..=*n).map(|i| i as f64 / *n as f64).collect()),
+                    LinesSpec::Count(n) => Ok(crate::mesh::equal_lines(*n)),
                     LinesSpec::List(v) => Ok(v.clone()),
+                    LinesSpec::Graded(g) => {
+                        if g.n == 0 || g.n > 10_000 {
+                            return Err(self.error(
+                                format!("{}.n", key(field)),
+                                format!("{} divisions: give 1 to 10 000", g.n),
+                            ));
+                        }
+                        if !(g.ratio.is_finite() && g.ratio > 0.0) {
+                            return Err(self.error(
+                                format!("{}.ratio", key(field)),
+                                format!(
+                                    "{} is not a positive ratio of neighbouring divisions",
+                                    g.ratio
+                                ),
+                            ));
+                        }
+                        Ok(crate::mesh::graded_lines(g.n, g.ratio, g.both_ends))
+                    }
                 }
             };
             let n = &bs.names;
