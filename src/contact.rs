@@ -445,12 +445,12 @@ impl CondensedContact {
         let (traces2, surface_misfits) =
             body2_traces(problem, c, body1, &chain, body2, &edge2, &mut points)?;
         // Loads on the bodies themselves (all tractions but the plate's, which load the plate)
-        // move the contact points before any contact force acts: their normal displacements
-        // enter the gap, d = u_n⁽²⁾ − u_n⁽¹⁾ + g.
+        // and prescribed support displacements move the contact points before any contact
+        // force acts: their normal displacements enter the gap, d = u_n⁽²⁾ − u_n⁽¹⁾ + g.
         let plate_edge: Vec<&str> = plate.iter().map(|p| p.edge.as_str()).collect();
         for (b, body, traces, sign) in [(b1, body1, &traces1, -1.0), (b2, body2, &traces2, 1.0)] {
             let load = problem.load_vector(b, body, &plate_edge)?;
-            if load.iter().any(|f| *f != 0.0) {
+            if load.iter().any(|f| *f != 0.0) || body.has_prescribed() {
                 let u = body
                     .solve(&load)
                     .map_err(|e| problem.error("bodies", e.to_string()))?

@@ -801,3 +801,59 @@ fn a_closed_loop_contact_edge_is_refused() {
         );
     }
 }
+
+#[test]
+fn prescribed_displacements_and_springs_that_make_no_sense() {
+    let base = baseline();
+    // A displacement for a component the support does not hold.
+    let text = base.replacen(
+        "fix = [\"z\"]",
+        "fix = [\"z\"]\ndisplacement = [0.1, 0.0]",
+        1,
+    );
+    expect_error(
+        &text,
+        "unheld",
+        &["bodies[0].supports[0].displacement", "does not hold x"],
+    );
+    // Two supports holding the same corner at different values.
+    let text = base
+        .replacen(
+            "fix = [\"z\"]",
+            "fix = [\"z\"]\ndisplacement = [0.0, 0.1]",
+            1,
+        )
+        .replace(
+            "[probes]",
+            "[[bodies.supports]]\npoint = [100.0, 0.0]\nfix = [\"z\"]\n\n[probes]",
+        );
+    expect_error(
+        &text,
+        "conflict",
+        &["bodies[0].supports[2]", "holds a point"],
+    );
+    // A spring bed with a negative modulus, and one with none.
+    let text = base.replace(
+        "[probes]",
+        "[[bodies.springs]]\nedge = \"outer\"\nnormal = -1.0\n\n[probes]",
+    );
+    expect_error(
+        &text,
+        "negative-spring",
+        &["bodies[0].springs[0].normal", "≥ 0"],
+    );
+    let text = base.replace(
+        "[probes]",
+        "[[bodies.springs]]\nedge = \"outer\"\n\n[probes]",
+    );
+    expect_error(
+        &text,
+        "no-spring",
+        &["bodies[0].springs[0]", "no stiffness"],
+    );
+    let text = base.replace(
+        "[probes]",
+        "[[bodies.springs]]\nedge = \"rim\"\nnormal = 1.0\n\n[probes]",
+    );
+    expect_error(&text, "spring-edge", &["bodies[0].springs[0].edge", "rim"]);
+}

@@ -27,8 +27,11 @@ use std::sync::OnceLock;
 
 mod dissection;
 mod schur;
+mod supports;
 mod thermal;
 pub use schur::{Row, Trace};
+pub use supports::Spring;
+use supports::SpringBlock;
 pub use thermal::ThermalLoads;
 
 /// Errors of the elasticity stage.
@@ -57,11 +60,16 @@ pub struct Discretisation {
     pub space: Space,
 }
 
-/// Dofs held at zero (supports), as (global dof) list.
+/// The supports of a body: held dofs (at zero or at a prescribed displacement) and elastic
+/// supports ([`supports`]).
 #[derive(Clone, Debug, Default)]
 pub struct Constraints {
-    /// Global dofs fixed at zero displacement.
+    /// Global dofs held (at zero unless `prescribed` gives a value).
     pub fixed: Vec<usize>,
+    /// Held dofs with a non-zero displacement (global dof, mm); each also in `fixed`.
+    pub prescribed: Vec<(usize, f64)>,
+    /// Beds of springs along element edges.
+    pub springs: Vec<Spring>,
 }
 
 /// An element type after condensation: all elements with equal geometry (up to translation),
@@ -103,6 +111,13 @@ pub struct ElasticBody {
     element_type: Vec<usize>,
     types: Vec<CondensedElement>,
     fixed: Vec<bool>,
+    /// The prescribed displacement of every held dof (0 elsewhere and at dofs held at 0), mm.
+    prescribed: Vec<f64>,
+    /// −K_fp u_p: what the prescribed displacements load the free dofs with, N (empty if
+    /// there are none).
+    lift: Vec<f64>,
+    /// The elastic supports.
+    springs: Vec<Spring>,
     /// The Cholesky factorisation of `matrix`, made on first use.
     factor: OnceLock<Factor>,
     /// The condensed stiffness matrix (N/mm), fixed rows and columns replaced by the identity;
@@ -343,7 +358,12 @@ impl ElasticBody {
         for &d in &constraints.fixed {
             fixed[d] = true;
         }
-        if !prevents_rigid_motion(&mesh, &dofs, &fixed) {
+        let mut prescribed = vec![0.0; n];
+        for &(d, value) in &constraints.prescribed {
+            fixed[d] = true;
+            prescribed[d] = value;
+        }
+        if !prevents_rigid_motion(&mesh, &dofs, &fixed, &constraints.springs) {
             // The factorisation alone would not catch it: on curved elements round-off leaves
             // the rigid-body pivots tiny but positive, and the solve returns nonsense.
             return Err(ElasticityError::Singular {
@@ -351,7 +371,34 @@ impl ElasticBody {
             });
         }
         let pattern = Pattern::new(&mesh, &dofs);
-        let values = assemble(&mesh, &dofs, &pattern, &element_type, &types, &fixed);
+        let springs: Vec<SpringBlock> = constraints
+            .springs
+            .iter()
+            .map(|s| SpringBlock::new(&mesh, &dofs, &basis, analysis.thickness(), s))
+            .collect();
+        let mut values = assemble(&mesh, &dofs, &pattern, &element_type, &types);
+        for spring in &springs {
+            spring.add_to(&pattern, &mut values);
+        }
+        hold(&pattern, &fixed, &mut values);
+        let lift = if constraints.prescribed.is_empty() {
+            Vec::new()
+        } else {
+            let mut lift = vec![0.0; n];
+            add_element_forces(
+                &mesh,
+                &dofs,
+                &element_type,
+                &types,
+                &prescribed,
+                -1.0,
+                &mut lift,
+            );
+            for spring in &springs {
+                spring.add_forces(&prescribed, -1.0, &mut lift);
+            }
+            lift
+        };
         let info = SetupInfo {
             total_dofs: n + mesh.elements.len() * 2 * basis.n_internal(),
             condensed_dofs: n,
@@ -372,6 +419,9 @@ impl ElasticBody {
             element_type,
             types,
             fixed,
+            prescribed,
+            lift,
+            springs: constraints.springs.clone(),
             factor: OnceLock::new(),
             matrix,
             info,
@@ -422,12 +472,65 @@ impl ElasticBody {
         Ok(())
     }
 
-    /// Displacement field for the global load vector `load` (N, one entry per global dof).
+    /// Displacement field for the global load vector `load` (N, one entry per global dof),
+    /// with the prescribed displacements of the supports.
     pub fn solve(&self, load: &[f64]) -> Result<Displacement, ElasticityError> {
-        let mut rhs = Mat::from_fn(load.len(), 1, |i, _| load[i]);
-        self.solve_in_place(&mut rhs)?;
-        let boundary: Vec<f64> = (0..load.len()).map(|i| rhs[(i, 0)]).collect();
+        let boundary = self.solve_boundary(load)?;
         Ok(self.recover(boundary))
+    }
+
+    /// The boundary dofs' displacement (mm) under `load` (N) and the prescribed displacements:
+    /// the lift added to the load, the solve, and the held dofs set to their values.
+    pub fn solve_boundary(&self, load: &[f64]) -> Result<Vec<f64>, ElasticityError> {
+        let mut rhs = Mat::from_fn(load.len(), 1, |i, _| {
+            load[i] + self.lift.get(i).copied().unwrap_or(0.0)
+        });
+        self.solve_in_place(&mut rhs)?;
+        Ok((0..load.len())
+            .map(|i| {
+                if self.fixed[i] {
+                    self.prescribed[i]
+                } else {
+                    rhs[(i, 0)]
+                }
+            })
+            .collect())
+    }
+
+    /// Whether some support prescribes a non-zero displacement: then the body moves even
+    /// without loads.
+    pub fn has_prescribed(&self) -> bool {
+        !self.lift.is_empty()
+    }
+
+    /// The energy stored in the body and its elastic supports at `u` (N·mm):
+    /// ½ Σ_e u_eᵀ S_e u_e over the condensed element matrices, plus the springs'. It is
+    /// ½ fᵀu when every held dof is at zero, and counts the supports' work when not.
+    pub fn stored_energy(&self, u: &Displacement) -> f64 {
+        let mut forces = vec![0.0; u.boundary.len()];
+        add_element_forces(
+            &self.mesh,
+            &self.dofs,
+            &self.element_type,
+            &self.types,
+            &u.boundary,
+            1.0,
+            &mut forces,
+        );
+        let elastic: f64 = 0.5
+            * forces
+                .iter()
+                .zip(&u.boundary)
+                .map(|(f, v)| f * v)
+                .sum::<f64>();
+        let thickness = self.analysis.thickness();
+        elastic
+            + self
+                .springs
+                .iter()
+                .map(|s| SpringBlock::new(&self.mesh, &self.dofs, &self.basis, thickness, s))
+                .map(|block| block.energy(&u.boundary))
+                .sum::<f64>()
     }
 
     /// Recover the internal modes of every element from the boundary dofs.
@@ -466,7 +569,7 @@ impl ElasticBody {
 /// a rotation). Each fixed component at a vertex (x, z) is a row of the constraint matrix on
 /// (t_x, t_z, θ): [1, 0, −z] or [0, 1, x], in coordinates centred and scaled by the mesh; the
 /// motion is prevented when the 3 × 3 Gram matrix of the rows is far from singular.
-fn prevents_rigid_motion(mesh: &Mesh, dofs: &DofMap, fixed: &[bool]) -> bool {
+fn prevents_rigid_motion(mesh: &Mesh, dofs: &DofMap, fixed: &[bool], springs: &[Spring]) -> bool {
     let count = mesh.vertices.len().max(1) as f64;
     let centre = mesh.vertices.iter().fold([0.0, 0.0], |c, v| {
         [c[0] + v[0] / count, c[1] + v[1] / count]
@@ -491,6 +594,26 @@ fn prevents_rigid_motion(mesh: &Mesh, dofs: &DofMap, fixed: &[bool]) -> bool {
             }
         }
     }
+    // A spring bed holds the motion along its normal (and its tangent) at the points of its
+    // edge: the rows n·(translation + rotation) there, as for a held component.
+    for spring in springs {
+        for t in [-1.0, 0.0, 1.0] {
+            let x = mesh.point_on_edge(spring.element, spring.local, t);
+            let (dx, dz) = ((x[0] - centre[0]) / size, (x[1] - centre[1]) / size);
+            let (_, n) = mesh.edge_frame(spring.element, spring.local, t);
+            let tangent = [-n[1], n[0]];
+            for (k, d) in [(spring.normal, n), (spring.tangential, tangent)] {
+                if k > 0.0 {
+                    let row = [d[0], d[1], -dz * d[0] + dx * d[1]];
+                    for a in 0..3 {
+                        for b in 0..3 {
+                            gram[a][b] += row[a] * row[b];
+                        }
+                    }
+                }
+            }
+        }
+    }
     let det = gram[0][0] * (gram[1][1] * gram[2][2] - gram[1][2] * gram[2][1])
         - gram[0][1] * (gram[1][0] * gram[2][2] - gram[1][2] * gram[2][0])
         + gram[0][2] * (gram[1][0] * gram[2][1] - gram[1][1] * gram[2][0]);
@@ -499,15 +622,13 @@ fn prevents_rigid_motion(mesh: &Mesh, dofs: &DofMap, fixed: &[bool]) -> bool {
     trace > 0.0 && det / trace.powi(3) > 1e-12
 }
 
-/// Add every element's condensed stiffness into the pattern's value array, block by block,
-/// then replace fixed rows and columns by the identity.
+/// Add every element's condensed stiffness into the pattern's value array, block by block.
 fn assemble(
     mesh: &Mesh,
     dofs: &DofMap,
     pattern: &Pattern,
     element_type: &[usize],
     types: &[CondensedElement],
-    fixed: &[bool],
 ) -> Vec<f64> {
     let mut values = vec![0.0; pattern.row_idx.len()];
     let p = dofs.p;
@@ -541,6 +662,40 @@ fn assemble(
             }
         }
     }
+    values
+}
+
+/// The elements' forces S_e u_e at global displacement `u` (N), assembled into `out` times
+/// `scale`: the stiffness applied element by element, without the held rows' identity.
+fn add_element_forces(
+    mesh: &Mesh,
+    dofs: &DofMap,
+    element_type: &[usize],
+    types: &[CondensedElement],
+    u: &[f64],
+    scale: f64,
+    out: &mut [f64],
+) {
+    for (element, &ty) in element_type.iter().enumerate() {
+        let ed = dofs.element_dofs(mesh, element);
+        let local: Vec<f64> = ed
+            .global
+            .iter()
+            .zip(&ed.sign)
+            .map(|(&g, &s)| s * u[g])
+            .collect();
+        if local.iter().all(|&v| v == 0.0) {
+            continue;
+        }
+        let k = &types[ty].condensed;
+        for (a, (&g, &s)) in ed.global.iter().zip(&ed.sign).enumerate() {
+            out[g] += scale * s * (0..local.len()).map(|b| k[(a, b)] * local[b]).sum::<f64>();
+        }
+    }
+}
+
+/// Replace the held dofs' rows and columns of the assembled values by the identity.
+fn hold(pattern: &Pattern, fixed: &[bool], values: &mut [f64]) {
     for col in 0..fixed.len() {
         let range = pattern.col_ptr[col]..pattern.col_ptr[col + 1];
         for (value, &row) in values[range.clone()]
@@ -552,5 +707,4 @@ fn assemble(
             }
         }
     }
-    values
 }

@@ -303,7 +303,8 @@ impl Problem {
         Ok(out)
     }
 
-    /// Supports of body `b` as fixed global dofs, plus `extra_clamped` edges held in x and z.
+    /// Supports of body `b`: held global dofs (with their prescribed displacements) and
+    /// elastic supports, plus `extra_clamped` edges held in x and z.
     pub fn constraints(
         &self,
         b: usize,
@@ -312,17 +313,22 @@ impl Problem {
         basis: &crate::basis::QuadBasis,
         extra_clamped: &[&str],
     ) -> Result<Constraints, ProblemError> {
-        let mut fixed = Vec::new();
-        let edge_dofs =
-            |name: &str, comps: &[usize], key: &str| -> Result<Vec<usize>, ProblemError> {
-                let mut out = Vec::new();
-                for &(element, local) in self.named_edge(mesh, b, name, key)? {
-                    for (g, _) in crate::loads::trace_dofs(dofs, mesh, basis, element, local) {
-                        out.extend(comps.iter().map(|&c| g[c]));
-                    }
+        // Every held dof with its value and the key that held it, to name conflicts.
+        let mut held: std::collections::BTreeMap<usize, (f64, String)> = Default::default();
+        let mut hold = |d: usize, value: f64, key: &str| -> Result<(), ProblemError> {
+            match held.get(&d) {
+                Some((v, other)) if *v != value => Err(self.error(
+                    key,
+                    format!(
+                        "holds a point of the body at {value} mm where {other} holds it at {v} mm"
+                    ),
+                )),
+                _ => {
+                    held.entry(d).or_insert((value, key.to_string()));
+                    Ok(())
                 }
-                Ok(out)
-            };
+            }
+        };
         for (k, s) in self.spec.bodies[b].supports.iter().enumerate() {
             let key = format!("bodies[{b}].supports[{k}]");
             let mut comps = Vec::new();
@@ -344,9 +350,38 @@ impl Problem {
                     "lists no component: give \"x\", \"z\" or both",
                 ));
             }
+            let displacement = s.displacement.unwrap_or([0.0, 0.0]);
+            for c in 0..2 {
+                if !displacement[c].is_finite() {
+                    return Err(self.error(format!("{key}.displacement"), "must be finite"));
+                }
+                if displacement[c] != 0.0 && !comps.contains(&c) {
+                    return Err(self.error(
+                        format!("{key}.displacement"),
+                        format!(
+                            "gives {} mm in {} but `fix` does not hold {}",
+                            displacement[c],
+                            ["x", "z"][c],
+                            ["x", "z"][c]
+                        ),
+                    ));
+                }
+            }
             match (&s.edge, s.point) {
                 (Some(edge), None) => {
-                    fixed.extend(edge_dofs(edge, &comps, &format!("{key}.edge"))?)
+                    for &(element, local) in
+                        self.named_edge(mesh, b, edge, &format!("{key}.edge"))?
+                    {
+                        // A constant along the edge: its vertex modes take the value, its edge
+                        // modes zero.
+                        let trace = crate::loads::trace_dofs(dofs, mesh, basis, element, local);
+                        for (m, (g, _)) in trace.iter().enumerate() {
+                            for &c in &comps {
+                                let value = if m < 2 { displacement[c] } else { 0.0 };
+                                hold(g[c], value, &key)?;
+                            }
+                        }
+                    }
                 }
                 (None, Some(point)) => {
                     let v = mesh.vertex_at(point).ok_or_else(|| {
@@ -355,17 +390,53 @@ impl Problem {
                             format!("({}, {}) is not a mesh vertex", point[0], point[1]),
                         )
                     })?;
-                    fixed.extend(comps.iter().map(|&c| dofs.vertex_dof(v, c)));
+                    for &c in &comps {
+                        hold(dofs.vertex_dof(v, c), displacement[c], &key)?;
+                    }
                 }
                 _ => return Err(self.error(key, "give exactly one of edge or point")),
             }
         }
         for name in extra_clamped {
-            fixed.extend(edge_dofs(name, &[0, 1], "plate.edge")?);
+            for &(element, local) in self.named_edge(mesh, b, name, "plate.edge")? {
+                for (g, _) in crate::loads::trace_dofs(dofs, mesh, basis, element, local) {
+                    hold(g[0], 0.0, "plate.edge")?;
+                    hold(g[1], 0.0, "plate.edge")?;
+                }
+            }
         }
-        fixed.sort_unstable();
-        fixed.dedup();
-        Ok(Constraints { fixed })
+        let mut springs = Vec::new();
+        for (k, s) in self.spec.bodies[b].springs.iter().enumerate() {
+            let key = format!("bodies[{b}].springs[{k}]");
+            for (name, value) in [("normal", s.normal), ("tangential", s.tangential)] {
+                if !(value.is_finite() && value >= 0.0) {
+                    return Err(self.error(
+                        format!("{key}.{name}"),
+                        format!("{value} is not a stiffness: give a modulus ≥ 0 in N/mm³"),
+                    ));
+                }
+            }
+            if s.normal == 0.0 && s.tangential == 0.0 {
+                return Err(self.error(key, "has no stiffness: give normal or tangential (N/mm³)"));
+            }
+            for &(element, local) in self.named_edge(mesh, b, &s.edge, &format!("{key}.edge"))? {
+                springs.push(crate::elasticity::Spring {
+                    element,
+                    local,
+                    normal: s.normal,
+                    tangential: s.tangential,
+                });
+            }
+        }
+        Ok(Constraints {
+            fixed: held.keys().copied().collect(),
+            prescribed: held
+                .iter()
+                .filter(|(_, (v, _))| *v != 0.0)
+                .map(|(&d, (v, _))| (d, *v))
+                .collect(),
+            springs,
+        })
     }
 
     /// Degree and space of body `b`: its own `p` if given, else `analysis.p`.

@@ -169,6 +169,24 @@ pub struct SupportSpec {
     pub point: Option<Point>,
     /// Components held: any of "x", "z".
     pub fix: Vec<String>,
+    /// The displacement [u_x, u_z] the held components take, mm (default zero); an entry for
+    /// a component that is not held must be 0.
+    #[serde(default, deserialize_with = "exact::optional_pair")]
+    pub displacement: Option<[f64; 2]>,
+}
+
+/// `[[bodies.springs]]`: an elastic support (a bed of springs) along a named edge.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpringSpec {
+    /// Named edge.
+    pub edge: String,
+    /// Normal modulus, N/mm³ (MPa of traction per mm of normal displacement).
+    #[serde(default)]
+    pub normal: f64,
+    /// Tangential modulus, N/mm³.
+    #[serde(default)]
+    pub tangential: f64,
 }
 
 /// A coordinate window: exactly one of x or z.
@@ -219,6 +237,9 @@ pub struct BodySpec {
     /// Supports.
     #[serde(default)]
     pub supports: Vec<SupportSpec>,
+    /// Elastic supports.
+    #[serde(default)]
+    pub springs: Vec<SpringSpec>,
     /// Tractions.
     #[serde(default)]
     pub tractions: Vec<TractionSpec>,

@@ -232,9 +232,7 @@ pub fn contact_fields_with_heat(
         for (l, f) in load.iter_mut().zip(thermal) {
             *l += f;
         }
-        let mut rhs = faer::Mat::from_fn(load.len(), 1, |i, _| load[i]);
-        body.solve_in_place(&mut rhs).map_err(error)?;
-        let boundary = (0..load.len()).map(|i| rhs[(i, 0)]).collect();
+        let boundary = body.solve_boundary(&load).map_err(error)?;
         Ok(body.recover_thermal(boundary, &t.loads, |e| t.rise[e].clone()))
     };
     Ok([

@@ -228,7 +228,10 @@ mod tests {
                 p,
                 space: Space::TensorProduct,
             },
-            &Constraints { fixed },
+            &Constraints {
+                fixed,
+                ..Default::default()
+            },
         )
         .unwrap()
     }
@@ -383,6 +386,7 @@ mod tests {
                         dofs.vertex_dof(a, 1),
                         dofs.vertex_dof(b, 0),
                     ],
+                    ..Default::default()
                 },
             )
             .unwrap();

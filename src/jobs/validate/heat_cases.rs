@@ -250,6 +250,8 @@ fn strip(analysis: Analysis) -> Result<ElasticBody, String> {
             space: Space::TensorProduct,
         },
         &Constraints {
+            prescribed: vec![],
+            springs: vec![],
             fixed: vec![
                 dofs.vertex_dof(left, 0),
                 dofs.vertex_dof(left, 1),
