@@ -59,6 +59,7 @@ fn plot_axes(path: &Path, title: &str, xl: &str, yl: &str, curves: &[Curve], log
             })
             .collect(),
         log_y,
+        zero_y: false,
     };
     if let Err(e) = write_figure(path, &figure) {
         panic!("{e}");

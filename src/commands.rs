@@ -125,10 +125,17 @@ pub(crate) fn sweep(
         // The lines `wearfem steady`/`run` would print for each: in sweep.json, counted in
         // the CSV's `warnings` column.
         eprintln!(
-            "warning: {file}: {} of {} variants have warnings (their texts are in sweep.json, `warnings`): {}",
-            warned.len(),
-            variants.len(),
-            warned.join("; ")
+            "{}",
+            wearfem::codes::warning(
+                "variants-warned",
+                &file,
+                format!(
+                    "{} of {} variants have warnings (their texts are in sweep.json): {}",
+                    warned.len(),
+                    variants.len(),
+                    warned.join("; ")
+                ),
+            )
         );
     }
     let no_cycle: Vec<String> = variants
@@ -292,12 +299,17 @@ pub(crate) fn steady_by(
     // printed by `--method exact` missing from the others).
     let mut warnings = driver::steady_warnings(p, &contact, state);
     match outcome.distance_from_exact {
-        Some(d) if d > wearfem::steady_check::STEADY_PRESSURE_LIMIT => warnings.push(format!(
-            "warning: {}: the {} method's pressures are {:.2} % of the peak from the exact steady state (`--method exact`): the paper's §6 methods approximate it (docs/validation.md)",
-            p.file,
-            method.name(),
-            100.0 * d
-        )),
+        Some(d) if d > wearfem::steady_check::STEADY_PRESSURE_LIMIT => {
+            warnings.push(wearfem::codes::warning(
+                "method-distance",
+                &p.file,
+                format!(
+                    "the {} method's pressures are {:.2} % of the peak from the exact steady state (`--method exact`)",
+                    method.name(),
+                    100.0 * d
+                ),
+            ))
+        }
         Some(_) => {}
         None => eprintln!(
             "note: {}: the exact steady state could not be computed to compare the {} method with",

@@ -1,6 +1,8 @@
 //! Problem input: the file schema, validation and model building, `--set` overrides, engineering wear units, and the built-in examples.
 
+pub mod duration;
 pub mod examples;
+pub mod gmsh;
 pub mod heat;
 pub mod overrides;
 pub mod problem;

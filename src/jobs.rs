@@ -1,5 +1,6 @@
 //! The jobs the command line and the Python layer run: elastic, contact, run and steady (driver), parameter studies (sweep), and the validation report.
 
+pub mod codes;
 pub mod driver;
 pub mod heat;
 pub mod json;

@@ -85,8 +85,8 @@ pub mod wear;
 pub use fe::{
     basis, conduction, dofs, elasticity, fields, geometry, loads, material, mesh, quadrature,
 };
-pub use input::{examples, heat as heat_input, overrides, problem, schema, wear_units};
-pub use jobs::{driver, p_check, steady_check, sweep, validate, validity};
+pub use input::{examples, gmsh, heat as heat_input, overrides, problem, schema, wear_units};
+pub use jobs::{codes, driver, p_check, steady_check, sweep, validate, validity};
 pub use report::{deformation, output, plot, vtk};
 pub use solver::{capacitance, complementarity, dense, lemke, updated_lu};
 pub use steady_state::{

@@ -172,6 +172,11 @@ enum Command {
         /// Example name.
         name: Option<String>,
     },
+    /// Explain a warning code (`warning[CODE]: …`), or list the codes.
+    Explain {
+        /// The code, as the warning gives it.
+        code: Option<String>,
+    },
 }
 
 impl Command {
@@ -184,7 +189,7 @@ impl Command {
             | Command::Steady { out, .. }
             | Command::Validate { out, .. }
             | Command::Sweep { out, .. } => Some(out),
-            Command::Examples { .. } => None,
+            Command::Examples { .. } | Command::Explain { .. } => None,
         }
     }
 }
@@ -367,68 +372,16 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 );
             }
             let h = &result.history;
-            // Report the last half cycle in the first step's direction ('+' unless a monotonic
-            // or reversed run starts with '-'), so the figure always exists.
-            let first = h.steps.first().map_or("+", |s| s.direction);
-            let last_first = h.steps.iter().rev().find(|s| s.direction == first);
-            let probe_text: Vec<String> = match last_first {
-                Some(step) => result
-                    .probes
-                    .iter()
-                    .zip(&step.probes)
-                    .map(|((n, _), value)| format!("p({n}) = {value:.4} MPa"))
-                    .collect(),
-                None => vec!["no steps".to_string()],
-            };
-            let probe_text = if probe_text.is_empty() {
-                vec!["no probes".to_string()]
-            } else {
-                probe_text
-            };
             if let Some(note) = driver::target_mesh_note(&p, &result.contact) {
                 println!("{note}");
             }
-            println!("{}: {} steps ({} half periods), {} contact solves in {:.3} s (+{:.3} s set-up); last '{first}' half cycle: {} → {}", p.file, h.steps.len(), h.steps.last().map_or(0, |s| s.half_period), h.solves, result.run_seconds, result.setup_seconds, probe_text.join(", "), out.display());
-            match &h.steady_distance {
-                Some(d) => {
-                    use wearfem::steady_check::SteadyCheck;
-                    let settled = d.unsettled() <= wearfem::wear::STEADY_REPORT_LIMIT;
-                    let penalty = matches!(
-                        driver::method(&p),
-                        Ok(wearfem::complementarity::Method::Penalty { .. })
-                    );
-                    let verdict = if result.steady_check.reached(h) {
-                        "at the steady state"
-                    } else if matches!(result.steady_check, SteadyCheck::SeparateZones { .. }) {
-                        "NOT a steady state of one rigid wear per period, and none exists to reach (run longer only to see whether the pressures still change)"
-                    } else if matches!(result.steady_check, SteadyCheck::Unavailable(_)) {
-                        // `wearfem steady` cannot help where there is none to compare with.
-                        "NOT at a steady state by its last cycle's own wear: run longer to see whether it settles"
-                    } else if penalty {
-                        "NOT at the steady state of exact contact, which `wearfem steady` computes whatever `contact.method` says: the penalty method's own steady state lies beside it by the penalty's overlap (see the c_n warning; raise contact.penalty)"
-                    } else if settled {
-                        "NOT at the steady state, though one cycle changes little: a slow approach (run longer) or a schedule that settles beside it (explicit `substeps`, very large k); `wearfem steady` gives the steady state directly"
-                    } else {
-                        "NOT yet at the steady state: run longer, or use `wearfem steady`"
-                    };
-                    let against = match &result.steady_check {
-                        SteadyCheck::NoCycle => String::new(),
-                        check => check.to_string(),
-                    };
-                    // δw compares the two half cycles of a period: none under monotonic sliding.
-                    let delta_w = if result.is_monotonic() {
-                        String::new()
-                    } else {
-                        format!(", δw = {:.3e} mm", d.delta_w)
-                    };
-                    // A zone that still grows: its wear can be rigid while the gaps next to it close.
-                    let closing = if d.closing > wearfem::wear::STEADY_REPORT_LIMIT {
-                        format!(", closing the gaps beside the contact zone at {:.2e} of the largest wear per period (the zone still grows)", d.closing)
-                    } else {
-                        String::new()
-                    };
-                    println!("last cycle: {against}; wear per period rigid to {:.2e} (relative){closing}{delta_w}: {verdict}", d.wear);
-                }
+            println!("{}", result.console_summary(&p, &out.display().to_string()));
+            let penalty = matches!(
+                driver::method(&p),
+                Ok(wearfem::complementarity::Method::Penalty { .. })
+            );
+            match result.console_cycle(penalty) {
+                Some(line) => println!("{line}"),
                 None => println!("no full cycle completed: no final profiles written"),
             }
             for w in result.warnings(&p) {
@@ -441,7 +394,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     } else {
                         // Its own estimate and the check against the steady state disagree:
                         // the check wins, and the user hears both.
-                        eprintln!("warning: {}: the adaptive schedule stopped at step {step}, its estimate of the distance still to go being below wear.adaptive.steady_tolerance, but the last cycle is NOT at the steady state (above): a slow mode fooled the estimate; lower steady_tolerance or run a fixed schedule with more steps", p.file);
+                        eprintln!("{}", wearfem::codes::warning("adaptive-stop", &p.file, format!("the adaptive schedule stopped at step {step} by its own estimate, but the last cycle is NOT at the steady state (above)")));
                     }
                 }
                 Some((step, reason)) => {
@@ -604,6 +557,20 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 }
             },
             _ => return Err(Failure::Input("usage: wearfem examples [show NAME]".into())),
+        },
+        Command::Explain { code: None } => {
+            for code in wearfem::codes::codes() {
+                println!("{code}");
+            }
+        }
+        Command::Explain { code: Some(code) } => match wearfem::codes::explain(&code) {
+            Some(text) => println!("{code}\n\n{text}"),
+            None => {
+                return Err(Failure::Input(format!(
+                    "{code}: no warning has that code (codes: {})",
+                    wearfem::codes::codes().join(", ")
+                )))
+            }
         },
     }
     Ok(())

@@ -13,6 +13,7 @@ pub use crate::kinematics::ScheduleEntry;
 use crate::kinematics::{half_period_sliding, paper_schedule};
 
 mod adaptive;
+mod body_wear;
 pub mod kinematics;
 pub mod law;
 mod outcome;
@@ -22,6 +23,7 @@ pub mod thermal;
 mod workspace;
 mod zero_shift;
 pub use adaptive::{AdaptiveMethod, AdaptiveSpec};
+pub use body_wear::worn_volume;
 pub use outcome::{non_rigid_part, steady_distance, SteadyDistance, StopReason};
 use serde::{Deserialize, Serialize};
 pub use zero_shift::wear_of_shape;
@@ -69,6 +71,9 @@ pub struct WearSpec {
     pub cycles: Option<f64>,
     /// Duration as sliding distance, m, instead of `steps`.
     pub distance: Option<f64>,
+    /// Duration as time, s, instead of `steps`: π/ω per half period (reciprocating),
+    /// `step_time` per step unit (monotonic).
+    pub time: Option<f64>,
     /// Extrapolation schedule (default: the paper's k = 1, 5, 10 after steps 50, 100).
     pub extrapolation: Option<Vec<ScheduleEntry>>,
     /// Error-controlled extrapolation instead of a schedule; the run then stops at the steady
@@ -102,6 +107,16 @@ pub struct WearSpec {
     /// Steps at which whole pressure and shape profiles are recorded.
     #[serde(default)]
     pub record: Vec<usize>,
+    /// Sliding distances (m) at which the profiles are recorded: the schedule's steps are cut
+    /// so that a step ends at each (to the nearest whole half period or step unit).
+    #[serde(default)]
+    pub record_distance: Vec<f64>,
+    /// Times (s) at which the profiles are recorded, as `record_distance`.
+    #[serde(default)]
+    pub record_time: Vec<f64>,
+    /// Cycles (reciprocating) after which the profiles are recorded, as `record_distance`.
+    #[serde(default)]
+    pub record_cycles: Vec<f64>,
 }
 
 fn implicit() -> String {
@@ -146,6 +161,9 @@ pub struct Snapshot {
     /// heat it includes the thermal gap the step was solved with.
     #[serde(skip)]
     pub contact_shape: Vec<f64>,
+    /// The depth worn off body 1 and off body 2 at each contact point since the run's start,
+    /// mm (material removed: not shifted by `shape_zero_at`; see [`WearHistory::body_wear`]).
+    pub body_wear: [Vec<f64>; 2],
 }
 
 /// One row of the step history.
@@ -200,6 +218,11 @@ pub struct WearHistory {
     /// point's wear summed over the steps (k half periods of the step's pressure each),
     /// including the wear that `shape_zero_at` shifts out of `shape`.
     pub worn_depth: [f64; 2],
+    /// The depth worn off body 1 and off body 2 at each contact point (body 2's at the
+    /// partner of each of body 1's points), mm: material removed, so not shifted by
+    /// `shape_zero_at`. The two add up to the shape's change; how it divides follows each
+    /// body's wear rule (module `body_wear`).
+    pub body_wear: [Vec<f64>; 2],
     /// Total contact solves.
     pub solves: usize,
     /// Steps whose iteration did not meet its tolerance.

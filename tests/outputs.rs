@@ -37,7 +37,10 @@ fn monotonic_runs_write_no_minus_columns() {
         let text = std::fs::read_to_string(dir.join(name)).unwrap();
         text.lines().next().unwrap().to_string()
     };
-    assert_eq!(header("final.csv"), "x_mm,p_plus_MPa,shape_mm,wear_mm");
+    assert_eq!(
+        header("final.csv"),
+        "x_mm,p_plus_MPa,shape_mm,wear_mm,wear_body1_mm,wear_body2_mm"
+    );
     assert!(!header("history.csv").contains("delta_w"));
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
@@ -147,7 +150,7 @@ fn shape_is_the_initial_gap_plus_the_wear_and_wear_is_the_wear() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "x_mm,p_plus_MPa,p_minus_MPa,p_sum_MPa,shape_mm,wear_mm"
+        "x_mm,p_plus_MPa,p_minus_MPa,p_sum_MPa,shape_mm,wear_mm,wear_body1_mm,wear_body2_mm"
     );
     let first: Vec<f64> = lines
         .next()

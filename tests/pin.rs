@@ -128,7 +128,7 @@ fn the_command_line_warns_and_writes_the_cut_ends() {
         assert!(result.status.success());
         let stderr = String::from_utf8_lossy(&result.stderr);
         assert_eq!(
-            stderr.contains("warning:") && stderr.contains("\"cap\""),
+            stderr.contains("warning[edge-end]") && stderr.contains("\"cap\""),
             cut,
             "{stderr}"
         );

@@ -194,3 +194,28 @@ fn a_shorter_vtk_rerun_leaves_only_the_files_of_its_collection() {
     assert!(dir.join("vtk/mesh.vtu").exists(), "the user's file is kept");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_run_without_heat_after_one_with_heat_leaves_no_temperatures() {
+    // heat.csv and the temperature figures were missing from the clean-up's list: a run of
+    // the same directory without heat left the earlier run's temperatures beside its own
+    // results.
+    let dir = scratch("after-heat");
+    let heat = wearfem(&["run", "punch-b40-heat", "--steps", "4"], &dir);
+    assert_eq!(code(&heat), Some(0));
+    assert!(dir.join("heat.csv").exists() && dir.join("temperature.png").exists());
+    assert_eq!(
+        code(&wearfem(&["run", "punch-b40", "--steps", "4"], &dir)),
+        Some(0)
+    );
+    let left = files(&dir);
+    for stale in [
+        "heat.csv",
+        "temperature.png",
+        "temperature.svg",
+        "contact_temperature.png",
+    ] {
+        assert!(!left.contains(&stale.to_string()), "{stale} left: {left:?}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -417,8 +417,10 @@ fn a_non_finite_half_period_wear_is_reported_as_unchecked() {
     assert!(why.contains("not finite"), "{why}");
     let warning = validity::half_period_warning(&p, Err(why.clone())).unwrap();
     assert!(
-        warning.starts_with(&format!("warning: {}: wear: could not check", p.file))
-            && warning.contains(&why),
+        warning.starts_with(&format!(
+            "warning[half-period-unchecked]: {}: wear: could not check",
+            p.file
+        )) && warning.contains(&why),
         "{warning}"
     );
 }

@@ -309,6 +309,23 @@ def test_run_gives_the_wear_apart_from_the_shape():
     np.testing.assert_allclose(r.shape - r.wear, crowns, rtol=0, atol=1e-12)
 
 
+def test_each_body_s_wear_and_volume():
+    # Both bodies wear, a = b = 1: each body's worn volume is β̃ᵢ F s (F = 16.666 MPa × 60 mm
+    # × 10 mm, s the sliding distance), and without a shift to zero the two profiles add up
+    # to the wear (round-off).
+    text = wearfem.Problem.builtin("punch-a").to_toml().replace("shape_zero_at = 1100.0", "")
+    beta1 = 3.9269908169872414e-8
+    problem = wearfem.Problem.from_toml(text).with_overrides(
+        {"wear.body2": {"beta": 0.5 * beta1, "a": 1.0, "b": 1.0}}
+    )
+    r = problem.run(steps=20)
+    force, s = 16.666 * 60.0 * 10.0, r.sliding_distance_m * 1000.0
+    np.testing.assert_allclose(r.worn_volume, [beta1 * force * s, 0.5 * beta1 * force * s], rtol=1e-9)
+    np.testing.assert_allclose(r.wear_body1 + r.wear_body2, r.wear, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(r.wear_body2, 0.5 * r.wear_body1, rtol=0, atol=1e-15)
+    assert r.worn_depth == [r.wear_body1.max(), r.wear_body2.max()]
+
+
 def test_warnings_reach_python():
     # punch-b40 with β̃ × 1000: one half period's wear moves the pressure by 60 % of its
     # peak, outside the half-period scheme (docs/validation.md); the command line warns, and

@@ -200,8 +200,10 @@ class RunResult(_Result):
     criterion (%), dissipation (N·mm),
     delta_w (mm, reciprocating only) and ``p_<probe>`` (MPa). Final profiles (None when the
     run did not complete a cycle): ``x`` (mm), ``p_plus``, ``p_minus``, ``p_sum`` (MPa),
-    ``shape`` (mm, the gap's profile: initial gap plus wear) and ``wear`` (mm, the wear
-    alone, positive where material was removed). Scalars: ``status`` ("solved", or what went wrong), ``converged``,
+    ``shape`` (mm, the gap's profile: initial gap plus wear), ``wear`` (mm, the wear
+    alone, positive where material was removed) and ``wear_body1``, ``wear_body2`` (mm, the
+    depth worn off each body, body 2's at the partner points; they add up to ``wear`` unless
+    ``wear.shape_zero_at`` shifts it). Scalars: ``status`` ("solved", or what went wrong), ``converged``,
     ``steady_reached`` (the last cycle's pressures within 1 % of the peak of the steady
     state of the same problem, or, where none exists, its wear rigid to 1 %),
     ``steady_distance`` (a dict: ``pressure``, that distance relative to the peak, None
@@ -212,7 +214,8 @@ class RunResult(_Result):
     when any of these three is non-zero or the run stopped early for another reason than the
     steady state; the profiles and steps are then only those of the completed steps),
     ``sliding_distance_m`` (m), ``worn_depth`` ([body 1, body 2]: the largest depth worn off
-    each body at a contact point, mm), ``setup_seconds``, ``run_seconds`` (s).
+    each body at a contact point, mm), ``worn_volume`` ([body 1, body 2], mm³),
+    ``setup_seconds``, ``run_seconds`` (s).
     """
 
     def __init__(self, summary):
@@ -236,12 +239,16 @@ class RunResult(_Result):
         self.p_sum = _array(final["p_sum"]) if final and "p_sum" in final else None
         self.shape = _array(final["shape"]) if final else None
         self.wear = _array(final["wear"]) if final else None
+        self.wear_body1 = _array(final["wear_body1"]) if final else None
+        self.wear_body2 = _array(final["wear_body2"]) if final else None
         self.solves: int = summary["solves"]
         self.failed_solves: int = summary["failed_solves"]
         self.unconverged_steps: int = summary["unconverged_steps"]
         self.oscillating_steps: int = summary.get("oscillating_steps", 0)
         # [body 1, body 2]: the largest depth worn off each body at a contact point, mm.
         self.worn_depth: List[float] = list(summary["worn_depth"])
+        # [body 1, body 2]: the volume worn off each body, mm³.
+        self.worn_volume: List[float] = list(summary["worn_volume"])
         self.steady_reached: Optional[bool] = summary.get("steady_reached")
         self.steady_distance: Optional[Dict[str, Optional[float]]] = summary.get("steady_distance")
         self.sliding_distance_m: Optional[float] = summary["sliding_distance_m"]

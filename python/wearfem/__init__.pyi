@@ -100,6 +100,8 @@ class RunResult:
     p_sum: Optional[FloatArray]  # MPa
     shape: Optional[FloatArray]  # mm, initial gap plus wear
     wear: Optional[FloatArray]  # mm, the wear alone
+    wear_body1: Optional[FloatArray]  # mm, the depth worn off body 1
+    wear_body2: Optional[FloatArray]  # mm, the depth worn off body 2 (at the partner points)
     status: str
     converged: bool
     steady_reached: Optional[bool]
@@ -109,6 +111,7 @@ class RunResult:
     unconverged_steps: int
     oscillating_steps: int
     worn_depth: List[float]
+    worn_volume: List[float]  # mm³, body 1 and body 2
     sliding_distance_m: Optional[float]  # m
     setup_seconds: float
     run_seconds: float

@@ -79,6 +79,16 @@ pub enum Curve {
         /// Polar angle of the last point about `center`, radians.
         end_angle: f64,
     },
+    /// Parabola through `start` (t = 0), `middle` (t = ½) and `end` (t = 1): the edge of a
+    /// second-order element read from a mesh file, an approximation of the true boundary.
+    Quadratic {
+        /// First point, mm.
+        start: Point,
+        /// Point at t = ½, mm.
+        middle: Point,
+        /// Last point, mm.
+        end: Point,
+    },
 }
 
 impl Curve {
@@ -99,6 +109,15 @@ impl Curve {
                 let a = start_angle + t * (end_angle - start_angle);
                 [center[0] + radius * a.cos(), center[1] + radius * a.sin()]
             }
+            Curve::Quadratic { start, middle, end } => {
+                // Lagrange basis on t = 0, ½, 1.
+                let (l0, l1, l2) = (
+                    (1.0 - t) * (1.0 - 2.0 * t),
+                    4.0 * t * (1.0 - t),
+                    t * (2.0 * t - 1.0),
+                );
+                std::array::from_fn(|d| l0 * start[d] + l1 * middle[d] + l2 * end[d])
+            }
         }
     }
 
@@ -115,6 +134,10 @@ impl Curve {
                 let sweep = end_angle - start_angle;
                 let a = start_angle + t * sweep;
                 [-radius * sweep * a.sin(), radius * sweep * a.cos()]
+            }
+            Curve::Quadratic { start, middle, end } => {
+                let (d0, d1, d2) = (4.0 * t - 3.0, 4.0 - 8.0 * t, 4.0 * t - 1.0);
+                std::array::from_fn(|d| d0 * start[d] + d1 * middle[d] + d2 * end[d])
             }
         }
     }
@@ -139,15 +162,33 @@ impl Curve {
                 end_angle,
                 ..
             } => std::mem::swap(start_angle, end_angle),
+            Curve::Quadratic { start, end, .. } => std::mem::swap(start, end),
         }
         c
     }
 
     /// Length, mm.
     pub fn length(&self) -> f64 {
-        // Both kinds are traversed at constant speed, so the length is |d point / dt|.
-        let d = self.derivative(0.0);
-        d[0].hypot(d[1])
+        match self {
+            // Traversed at constant speed: the length is |d point / dt|.
+            Curve::Line { .. } | Curve::Arc { .. } => {
+                let d = self.derivative(0.0);
+                d[0].hypot(d[1])
+            }
+            // |d point / dt| is the square root of a quadratic in t: 12 Gauss points leave
+            // an error far below round-off for any edge that is not folded back on itself.
+            Curve::Quadratic { .. } => {
+                let rule = crate::quadrature::gauss_legendre(12);
+                rule.points
+                    .iter()
+                    .zip(&rule.weights)
+                    .map(|(&x, &w)| {
+                        let d = self.derivative(0.5 * (x + 1.0));
+                        0.5 * w * d[0].hypot(d[1])
+                    })
+                    .sum()
+            }
+        }
     }
 
     /// Minor arc (|sweep| < π) from `start` to `end` about `center` (all mm); `edge` only
@@ -205,6 +246,9 @@ pub enum EdgeShape {
     Straight,
     /// Minor circular arc about the given centre [x, z], mm.
     ArcAbout(Point),
+    /// Parabola through the given point [x, z] (mm) at the edge's parameter ½ (a
+    /// second-order element's mid-edge node).
+    Through(Point),
 }
 
 /// A curvilinear quadrilateral with corners c0..c3 counter-clockwise.
@@ -236,8 +280,18 @@ impl Block {
             end: corners[(e + 1) % 4],
         });
         for (e, shape) in shapes.iter().enumerate() {
-            if let EdgeShape::ArcAbout(c) = *shape {
-                edges[e] = Curve::arc_through(corners[e], corners[(e + 1) % 4], c, e)?;
+            match *shape {
+                EdgeShape::Straight => {}
+                EdgeShape::ArcAbout(c) => {
+                    edges[e] = Curve::arc_through(corners[e], corners[(e + 1) % 4], c, e)?;
+                }
+                EdgeShape::Through(middle) => {
+                    edges[e] = Curve::Quadratic {
+                        start: corners[e],
+                        middle,
+                        end: corners[(e + 1) % 4],
+                    };
+                }
             }
         }
         let block = Block { corners, edges };
@@ -381,7 +435,32 @@ fn det2(j: &[[f64; 2]; 2]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use EdgeShape::{ArcAbout, Straight};
+    use EdgeShape::{ArcAbout, Straight, Through};
+
+    #[test]
+    fn a_quadratic_edge_passes_through_its_three_points_and_has_its_length() {
+        // The parabola z = x² on [0, 1] through (0, 0), (½, ¼), (1, 1): its length is
+        // (2√5 + asinh 2)/4 (integral of √(1 + 4x²)).
+        let curve = Curve::Quadratic {
+            start: [0.0, 0.0],
+            middle: [0.5, 0.25],
+            end: [1.0, 1.0],
+        };
+        for t in [0.0, 0.3, 0.5, 1.0] {
+            let p = curve.point(t);
+            assert!((p[1] - p[0] * p[0]).abs() < 1e-15, "{p:?}");
+        }
+        let exact = (2.0 * 5f64.sqrt() + 2f64.asinh()) / 4.0;
+        assert!((curve.length() - exact).abs() < 1e-12, "{}", curve.length());
+        assert!((curve.reversed().point(0.3)[0] - curve.point(0.7)[0]).abs() < 1e-15);
+        // A block with a bulging quadratic edge maps its mid-edge to the given node.
+        let block = Block::new(
+            [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+            [Through([0.5, -0.1]), Straight, Straight, Straight],
+        )
+        .unwrap();
+        assert_eq!(block.map(0.5, 0.0), [0.5, -0.1]);
+    }
 
     fn quarter_ring() -> Block {
         let o = [0.0, 0.0];

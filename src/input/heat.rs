@@ -271,10 +271,13 @@ impl Problem {
         let used: Vec<&str> = bodies
             .iter()
             .flat_map(|&b| {
-                self.spec.bodies[b]
-                    .blocks
+                let body = &self.spec.bodies[b];
+                let gmsh = body.gmsh.iter().flat_map(|g| g.materials.values());
+                body.blocks
                     .iter()
-                    .map(|bl| bl.material.as_str())
+                    .map(|bl| &bl.material)
+                    .chain(gmsh)
+                    .map(String::as_str)
             })
             .collect();
         let mut out = Vec::new();

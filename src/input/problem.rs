@@ -10,6 +10,7 @@ use crate::material::{Analysis, Material};
 use crate::mesh::Mesh;
 pub use crate::schema::*;
 
+mod gmsh_body;
 mod meshes;
 
 use std::sync::Arc;
@@ -169,10 +170,22 @@ impl Problem {
             return Err(err("bodies", "at least one body is needed".into()));
         }
         for (b, body) in spec.bodies.iter().enumerate() {
-            if body.blocks.is_empty() {
+            if body.blocks.is_empty() && body.gmsh.is_none() {
                 return Err(err(
                     &format!("bodies[{b}].blocks"),
-                    format!("body \"{}\" has no blocks", body.name),
+                    format!(
+                        "body \"{}\" has no blocks: give [[bodies.blocks]] or a Gmsh mesh, [bodies.gmsh]",
+                        body.name
+                    ),
+                ));
+            }
+            if !body.blocks.is_empty() && body.gmsh.is_some() {
+                return Err(err(
+                    &format!("bodies[{b}].gmsh"),
+                    format!(
+                        "body \"{}\" gives both blocks and a Gmsh mesh: give one",
+                        body.name
+                    ),
                 ));
             }
             if spec.bodies[..b].iter().any(|other| other.name == body.name) {

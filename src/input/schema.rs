@@ -123,6 +123,32 @@ pub struct ArcSpec {
     pub center: Point,
 }
 
+/// `[bodies.gmsh]`: a body's mesh from a Gmsh file (format 4.1, ASCII or binary).
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct GmshSpec {
+    /// The `.msh` file, relative to the problem file's folder (or absolute).
+    pub file: String,
+    /// The body's physical surface groups and the material of each: group name → material
+    /// name. The body is the quadrilaterals of these groups.
+    pub materials: BTreeMap<String, String>,
+    /// Physical curves whose nodes lie on circles, snapped to exact arcs about the given
+    /// centres; other curved edges take the second-order elements' geometry.
+    #[serde(default)]
+    pub arcs: Vec<GmshArcSpec>,
+}
+
+/// A physical curve of a Gmsh mesh that is an arc of a circle.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct GmshArcSpec {
+    /// The physical curve's name.
+    pub edge: String,
+    /// The circle's centre [x, z], mm.
+    #[serde(deserialize_with = "exact::pair")]
+    pub center: Point,
+}
+
 /// Names of block edges.
 #[derive(Clone, Debug, Default, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
@@ -232,8 +258,12 @@ pub struct BodySpec {
     /// body 1 (mortar contact couples any two degrees).
     #[serde(default)]
     pub p: Option<usize>,
-    /// Blocks.
+    /// Blocks (give these or `gmsh`).
+    #[serde(default)]
     pub blocks: Vec<BlockSpec>,
+    /// A mesh from Gmsh (give this or `blocks`).
+    #[serde(default)]
+    pub gmsh: Option<GmshSpec>,
     /// Supports.
     #[serde(default)]
     pub supports: Vec<SupportSpec>,

@@ -113,78 +113,109 @@ impl TryFrom<WearLawInput> for WearLaw {
 type KeyError = (String, String);
 
 /// `spec` with `steps` (and, when the schedule overshoots, `extrapolation`) worked out from
-/// whichever of `steps`, `cycles` and `distance` it gives. The error names the key.
+/// whichever of `steps`, `cycles`, `distance` and `time` it gives, cut to land on its record
+/// points in metres, seconds or cycles (module [`crate::input::duration`]), which join
+/// `record` as steps. The error names the key.
 pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
+    use crate::input::duration::{half_periods_of, record_points, steps_through, Units};
     let bad = |k: &str, m: String| Err((format!("wear.{k}"), m));
     let given = [
         spec.steps > 0,
         spec.cycles.is_some(),
         spec.distance.is_some(),
+        spec.time.is_some(),
     ];
     match given.iter().filter(|g| **g).count() {
         0 => return bad(
             "steps",
-            "give the duration: steps (at least 1; 0 counts as not given), cycles or distance (m)"
+            "give the duration: steps (at least 1; 0 counts as not given), cycles, distance (m) or time (s)"
                 .into(),
         ),
         1 => {}
         _ => {
             return bad(
                 "steps",
-                "give only one of steps, cycles and distance (m)".into(),
+                "give only one of steps, cycles, distance (m) and time (s)".into(),
             )
         }
     }
-    if spec.steps > 0 {
+    let points = record_points(spec)?;
+    if spec.steps > 0 && points.is_empty() {
         return Ok(spec.clone());
     }
     let monotonic = spec.sliding == "monotonic";
-    let (key, units) = match (spec.cycles, spec.distance) {
-        (Some(_), _) if monotonic => {
-            return bad(
-                "cycles",
-                "monotonic sliding has no cycles: give distance (m) or steps".into(),
-            )
-        }
-        (Some(c), _) => ("cycles", 2.0 * c),
-        (None, Some(d)) => {
-            // Sliding per half period (per step unit when monotonic), mm.
-            let per_unit = if monotonic {
-                spec.speed * spec.step_time
-            } else {
-                2.0 * spec.amplitude
-            };
-            if !(per_unit > 0.0 && per_unit.is_finite()) {
-                return bad("distance", "needs the sliding (amplitude, or speed and step_time) to be given and positive".into());
-            }
-            ("distance", 1000.0 * d / per_unit)
-        }
-        (None, None) => unreachable!("one of the three is given"),
-    };
-    let value = spec.cycles.or(spec.distance).unwrap_or(f64::NAN);
-    let half_periods = units.round();
-    if !(value.is_finite() && (1.0..=1e12).contains(&half_periods)) {
-        return bad(
-            key,
-            format!("must give at least one half period (and at most 1e12), got {value}"),
-        );
-    }
-    if spec.adaptive.is_some() {
-        // The controller chooses k itself and the run ends at the steady state; a schedule
-        // cut to a duration has nothing to cut.
-        return bad(
-            key,
-            "[wear.adaptive] chooses k itself and stops at the steady state: give the most steps it may take as wear.steps".into(),
-        );
+    if let (Some(adaptive_key), Some(_)) = (points.first().map(|p| &p.1), &spec.adaptive) {
+        // The controller chooses k itself: there is no schedule to cut at the record points.
+        return Err((
+            adaptive_key.clone(),
+            "[wear.adaptive] chooses k itself and cannot land on given distances, times or cycles: record by wear.record (steps), or give a schedule".into(),
+        ));
     }
     let schedule = spec.extrapolation.clone().unwrap_or_else(paper_schedule);
-    let (steps, schedule) =
-        steps_for(half_periods as u64, &schedule, !monotonic).ok_or_else(|| {
+    let (key, end) = if spec.steps > 0 {
+        ("steps", half_periods_of(spec.steps, &schedule) as f64)
+    } else {
+        let units = Units::of(spec);
+        let (key, value, per_unit, missing) = match (spec.cycles, spec.distance, spec.time) {
+            (Some(c), _, _) => (
+                "cycles",
+                c,
+                units.per_cycle,
+                "monotonic sliding has no cycles: give distance (m), time (s) or steps",
+            ),
+            (_, Some(d), _) => (
+                "distance",
+                d,
+                units.per_metre,
+                "needs the sliding (amplitude, or speed and step_time) to be given and positive",
+            ),
+            (_, _, Some(t)) => (
+                "time",
+                t,
+                units.per_second,
+                "needs omega (reciprocating) or step_time (monotonic) to be given and positive",
+            ),
+            _ => unreachable!("one of the four is given"),
+        };
+        let Some(per_unit) = per_unit else {
+            return bad(key, missing.into());
+        };
+        let half_periods = (value * per_unit).round();
+        if !(value.is_finite() && (1.0..=1e12).contains(&half_periods)) {
+            return bad(
+                key,
+                format!("must give at least one half period (and at most 1e12), got {value}"),
+            );
+        }
+        if spec.adaptive.is_some() {
+            // The controller chooses k itself and the run ends at the steady state; a schedule
+            // cut to a duration has nothing to cut.
+            return bad(
+                key,
+                "[wear.adaptive] chooses k itself and stops at the steady state: give the most steps it may take as wear.steps".into(),
+            );
+        }
+        (key, half_periods)
+    };
+    let end = end as u64;
+    if let Some((beyond, point_key)) = points.iter().find(|p| p.0 > end) {
+        return Err((
+            point_key.clone(),
+            format!("lies {beyond} half periods (step units) into the run, past its end at {end}"),
+        ));
+    }
+    let mut targets: Vec<u64> = points.iter().map(|p| p.0).filter(|&h| h < end).collect();
+    targets.push(end);
+    let crate::input::duration::Through {
+        steps,
+        schedule,
+        ends,
+    } = steps_through(&targets, &schedule, !monotonic)
+        .map_err(|m| (format!("wear.{key}"), m))?
+        .ok_or_else(|| {
             (
                 format!("wear.{key}"),
-                format!(
-                    "{value} needs more than {MAX_STEPS} steps with this extrapolation schedule"
-                ),
+                format!("needs more than {MAX_STEPS} steps with this extrapolation schedule"),
             )
         })?;
     if let Some(e) = schedule.iter().find(|e| e.k > MAX_FACTOR) {
@@ -195,9 +226,29 @@ pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
             format!("the last step would need k = {} > {MAX_FACTOR} to balance the two directions with this extrapolation schedule", e.k),
         );
     }
+    // The steps that end at the record points (a point at the run's end is its last step).
+    let mut record = spec.record.clone();
+    for (point, _) in &points {
+        let at = targets
+            .iter()
+            .position(|t| t == point)
+            .map_or(steps, |i| ends[i]);
+        record.push(at);
+    }
+    record.sort_unstable();
+    record.dedup();
+    // Resolved: the steps and the record steps say it all, and resolving again changes
+    // nothing.
     Ok(WearSpec {
         steps,
         extrapolation: Some(schedule),
+        record,
+        cycles: None,
+        distance: None,
+        time: None,
+        record_distance: vec![],
+        record_time: vec![],
+        record_cycles: vec![],
         ..spec.clone()
     })
 }

@@ -73,9 +73,13 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
             if materials.len() > 1 {
                 let names: Vec<&str> = problem.spec.materials.keys().map(String::as_str).collect();
                 let name_of = |m: usize| names.get(m).copied().unwrap_or("?");
-                warnings.push(format!(
-                    "warning: {}: probe \"{name}\" at ({}, {}) lies on the interface of materials \"{}\" and \"{}\", where stress and strain jump; they are taken on \"{}\"'s side (move the probe off the interface to choose a side)",
-                    problem.file, probe.at[0], probe.at[1], name_of(materials[0]), name_of(materials[1]), name_of(materials[0])
+                warnings.push(crate::jobs::codes::warning(
+                    "probe-interface",
+                    &problem.file,
+                    format!(
+                        "probe \"{name}\" at ({}, {}) lies on the interface of materials \"{}\" and \"{}\": its stress and strain are taken on \"{}\"'s side",
+                        probe.at[0], probe.at[1], name_of(materials[0]), name_of(materials[1]), name_of(materials[0])
+                    ),
                 ));
             }
         }

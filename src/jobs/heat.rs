@@ -2,6 +2,7 @@
 //! contact bodies and the contact, handed to the wear stage's thermal model
 //! ([`crate::wear::thermal`]).
 
+use super::codes::warning;
 use super::driver::JobError;
 use crate::contact::CondensedContact;
 use crate::elasticity::ElasticBody;
@@ -96,10 +97,10 @@ pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<Stri
     let file = &problem.file;
     let mut warnings = Vec::new();
     if info.trapped {
-        warnings.push(format!("warning: {file}: heat: frictional heat enters a body that cannot lose it (its edges insulated, its faces not convecting), so its temperature rises without end: the temperatures and the thermal distortion are those of a body that keeps all its heat, and `wearfem steady` has no steady state to give"));
+        warnings.push(warning("heat-no-exit", file, "heat: frictional heat enters a body that cannot lose it (insulated edges, no face convection): its temperature rises without end"));
     }
     if info.held_points > 0 {
-        warnings.push(format!("warning: {file}: heat: {} contact point(s) lie where the contact edge meets an edge held at a temperature; the part of their frictional heat that falls on the held edge goes straight into it (the held temperature does not rise), so the contact there is cooler than a corner that is not held", info.held_points));
+        warnings.push(warning("heat-held-edge", file, format!("heat: {} contact point(s) lie where the contact edge meets an edge held at a temperature: the contact there stays cooler", info.held_points)));
     }
     let h = &run.history;
     if info.interface_conductance > 0.0 && !h.p_plus.is_empty() {
@@ -108,12 +109,16 @@ pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<Stri
             .filter(|&i| h.p_plus[i] <= 0.0 && h.p_minus.get(i).is_none_or(|&p| p <= 0.0))
             .collect();
         if let (Some(&first), Some(&last)) = (apart.first(), apart.last()) {
-            warnings.push(format!(
-                "warning: {file}: heat: perfect thermal contact ties every contact point to its partner, and {} of the {} points carry no pressure in the last cycle (x = {:.3} … {:.3} mm): heat crosses there as if they touched; name a contact edge no wider than the contact, or give heat.partition a fraction",
-                apart.len(),
-                x.len(),
-                x[first][0],
-                x[last][0]
+            warnings.push(warning(
+                "heat-open-points",
+                file,
+                format!(
+                    "heat: perfect thermal contact, and {} of the {} points carry no pressure in the last cycle (x = {:.3} … {:.3} mm): heat crosses there as if they touched",
+                    apart.len(),
+                    x.len(),
+                    x[first][0],
+                    x[last][0]
+                ),
             ));
         }
     }
@@ -124,7 +129,7 @@ pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<Stri
         .flatten()
         .fold(f64::NEG_INFINITY, f64::max);
     if hottest > PROPERTY_TEMPERATURE {
-        warnings.push(format!("warning: {file}: heat: the bodies reach {hottest:.0} °C, where the conductivity, heat capacity, expansion and moduli of most engineering materials differ from their room-temperature values, which the model holds constant"));
+        warnings.push(warning("heat-hot", file, format!("heat: the bodies reach {hottest:.0} °C, where the material properties held constant differ from their room-temperature values")));
     }
     warnings
 }
@@ -146,17 +151,21 @@ pub fn steady_warnings(
             .filter(|&i| state.p_plus[i] <= 0.0 && state.p_minus.get(i).is_none_or(|&p| p <= 0.0))
             .collect();
         if let (Some(&first), Some(&last)) = (apart.first(), apart.last()) {
-            warnings.push(format!(
-                "warning: {file}: heat: perfect thermal contact ties every contact point to its partner, and {} of the {} points carry no pressure in the steady state (x = {:.3} … {:.3} mm): heat crosses there as if they touched; name a contact edge no wider than the contact, or give heat.partition a fraction",
-                apart.len(),
-                x.len(),
-                x[first][0],
-                x[last][0]
+            warnings.push(warning(
+                "heat-open-points",
+                file,
+                format!(
+                    "heat: perfect thermal contact, and {} of the {} points carry no pressure in the steady state (x = {:.3} … {:.3} mm): heat crosses there as if they touched",
+                    apart.len(),
+                    x.len(),
+                    x[first][0],
+                    x[last][0]
+                ),
             ));
         }
     }
     if info.held_points > 0 {
-        warnings.push(format!("warning: {file}: heat: {} contact point(s) lie where the contact edge meets an edge held at a temperature; the part of their frictional heat that falls on the held edge goes straight into it", info.held_points));
+        warnings.push(warning("heat-held-edge", file, format!("heat: {} contact point(s) lie where the contact edge meets an edge held at a temperature: the contact there stays cooler", info.held_points)));
     }
     warnings
 }

@@ -13,9 +13,13 @@
 //! changes by 15 % of its peak there from p = 8 to 10), while inside the zone it changes by
 //! 1.2 % of the mean pressure; the coarse-in-depth block above changes by 2.8 % there.
 
+use super::codes::warning;
 use crate::complementarity::{ContactSolver, Status};
 use crate::contact::CondensedContact;
 use crate::problem::Problem;
+
+mod run_states;
+pub use run_states::{p_check_run, RunPCheck};
 
 /// How much the check raises every degree (at most to 20). By 2, not 1: with p + 1 the
 /// contact points of odd and even degrees interleave differently, and punch-b40 changed by
@@ -109,6 +113,15 @@ pub fn depths_under_zone(
 /// changed it by only 1.6–3.3 %: a p-extension understates an error that converges slowly
 /// in p, so depth is measured directly). Cheap: made in studies too.
 pub fn depth_warnings(problem: &Problem, contact: &CondensedContact) -> Vec<String> {
+    first_solve_depth_warnings(problem, contact, "")
+}
+
+/// [`depth_warnings`], `which` said after the zone's length.
+fn first_solve_depth_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    which: &str,
+) -> Vec<String> {
     let (Ok(direction), Ok(method)) = (
         crate::driver::direction(problem),
         crate::driver::method(problem),
@@ -120,15 +133,55 @@ pub fn depth_warnings(problem: &Problem, contact: &CondensedContact) -> Vec<Stri
     if info.status != Status::Solved {
         return Vec::new();
     }
-    depths_under_zone(problem, contact, &solution.pressure)
+    depth_warnings_of(problem, contact, &solution.pressure, which)
+}
+
+/// The depth warnings of a run: of its last state (`last`, MPa at the contact points), and
+/// of its first contact solve where the last state passes, said to concern the early states:
+/// a run's zone can grow from a Hertzian start that its elements do not resolve into a worn
+/// zone that they do.
+pub fn run_depth_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    last: &[f64],
+) -> Vec<String> {
+    let at_end = depth_warnings_of(problem, contact, last, " in the run's last state");
+    if !at_end.is_empty() {
+        return at_end;
+    }
+    let zone = zone_of(&contact.points.x, last)
+        .map(|z| format!(" (x = {} … {} mm)", short(z[0]), short(z[1])))
+        .unwrap_or_default();
+    first_solve_depth_warnings(problem, contact, " in the first contact solve")
+        .into_iter()
+        .map(|w| {
+            format!(
+                "{w}; the run's last zone{zone} is resolved, so it concerns the run's early states"
+            )
+        })
+        .collect()
+}
+
+/// The warnings of [`depth_warnings`] for the zone of `pressure` (MPa at the contact
+/// points), `which` saying whose zone it is (after "a contact zone").
+fn depth_warnings_of(
+    problem: &Problem,
+    contact: &CondensedContact,
+    pressure: &[f64],
+    which: &str,
+) -> Vec<String> {
+    depths_under_zone(problem, contact, pressure)
         .into_iter()
         .filter(|(_, depth, zone)| *depth > DEPTH_LIMIT * zone)
-        .map(|(name, depth, zone)| format!(
-            "warning: {}: body \"{name}\" has elements {} mm deep under a contact zone {} mm long ({:.1} times, more than {DEPTH_LIMIT}): the pressure depends on the body's response within about a zone's length of the contact, which such elements do not resolve, and refining the contact edge does not change that (a nearly rigid punch on layers 3 times deeper than its zone: 6 % low at the centre, 11 % inside the zone). Grade the blocks under the contact in depth (docs/validation.md, \"Convergence in p\")",
-            problem.file,
-            short(depth),
-            short(zone),
-            depth / zone
+        .map(|(name, depth, zone)| warning(
+            "depth",
+            &problem.file,
+            format!(
+                "body \"{name}\" has elements {} mm deep under a contact zone {} mm long{which} ({:.1} times, more than {DEPTH_LIMIT}): not resolved in depth",
+                short(depth),
+                short(zone),
+                depth / zone
+            ),
         ))
         .collect()
 }
@@ -140,6 +193,26 @@ pub struct PCheck {
     pub degrees: Vec<(String, usize, usize)>,
     /// Largest change of the pressure inside the zone, relative to its mean pressure.
     pub change: f64,
+    /// The checked state's contact zone: x of its first and last point with pressure, mm.
+    pub zone: [f64; 2],
+}
+
+/// Each body's name, degree, and its degree in `raised`.
+fn degrees(problem: &Problem, raised: &Problem) -> Vec<(String, usize, usize)> {
+    problem
+        .spec
+        .bodies
+        .iter()
+        .enumerate()
+        .map(|(i, b)| (b.name.clone(), degree(problem, i), degree(raised, i)))
+        .collect()
+}
+
+/// x (mm) of the first and last of the points `x` with pressure; None without any.
+fn zone_of(x: &[[f64; 2]], pressure: &[f64]) -> Option<[f64; 2]> {
+    let first = pressure.iter().position(|&p| p > 0.0)?;
+    let last = pressure.iter().rposition(|&p| p > 0.0)?;
+    Some([x[first][0], x[last][0]])
 }
 
 /// The first contact solve of `problem` (its contact `contact`) against the same solve with
@@ -174,14 +247,13 @@ pub fn p_check(problem: &Problem, contact: &CondensedContact) -> Result<Option<P
         &base.pressure,
         fine_at,
     );
-    let degrees = problem
-        .spec
-        .bodies
-        .iter()
-        .enumerate()
-        .map(|(i, b)| (b.name.clone(), degree(problem, i), degree(&raised, i)))
-        .collect();
-    Ok(change.map(|change| PCheck { degrees, change }))
+    let degrees = degrees(problem, &raised);
+    let zone = zone_of(&contact.points.x, &base.pressure);
+    Ok(change.zip(zone).map(|(change, zone)| PCheck {
+        degrees,
+        change,
+        zone,
+    }))
 }
 
 /// The warning for a [`p_check`] above [`P_CHANGE_LIMIT`], or for one that could not be made.
@@ -189,14 +261,28 @@ pub fn p_check_warning(problem: &Problem, check: Result<Option<PCheck>, String>)
     let check = match check {
         Ok(check) => check?,
         Err(why) => {
-            return Some(format!(
-                "warning: {}: analysis.p_check: could not check the resolution in p: {why}",
-                problem.file
+            return Some(warning(
+                "p-check-failed",
+                &problem.file,
+                format!("analysis.p_check: could not check the resolution in p: {why}"),
             ))
         }
     };
-    let d = &check.degrees;
-    let raised = if d.iter().all(|b| (b.1, b.2) == (d[0].1, d[0].2)) {
+    let raised = raised_text(&check.degrees);
+    (check.change > P_CHANGE_LIMIT).then(|| warning(
+        "p-check",
+        &problem.file,
+        format!(
+            "the contact pressure is not converged in p: raising {raised} changes the first contact solve's pressure inside the zone by {:.1} % of its mean pressure (more than {:.0} %)",
+            100.0 * check.change,
+            100.0 * P_CHANGE_LIMIT,
+        ),
+    ))
+}
+
+/// "the degree from 8 to 10", or each body's when they differ.
+fn raised_text(d: &[(String, usize, usize)]) -> String {
+    if d.iter().all(|b| (b.1, b.2) == (d[0].1, d[0].2)) {
         format!("the degree from {} to {}", d[0].1, d[0].2)
     } else {
         let each: Vec<String> = d
@@ -204,12 +290,70 @@ pub fn p_check_warning(problem: &Problem, check: Result<Option<PCheck>, String>)
             .map(|b| format!("{} {} → {}", b.0, b.1, b.2))
             .collect();
         format!("the degrees ({})", each.join(", "))
+    }
+}
+
+/// The warning of a run's check in p ([`p_check_run`]): which of its first contact solve and
+/// its last state are not converged, with each state's zone, so that a warning about a
+/// run's Hertzian start is not read as one about the worn state it grew into.
+pub fn run_p_check_warning(problem: &Problem, check: Result<RunPCheck, String>) -> Option<String> {
+    let check = match check {
+        Ok(check) => check,
+        Err(why) => {
+            return Some(warning(
+                "p-check-failed",
+                &problem.file,
+                format!("analysis.p_check: could not check the resolution in p: {why}"),
+            ))
+        }
     };
-    (check.change > P_CHANGE_LIMIT).then(|| format!(
-        "warning: {}: the contact pressure is not converged in p: raising {raised} changes the first contact solve's pressure inside the zone by {:.1} % of its mean pressure (more than {:.0} %), and the error of this mesh is likely at least that. The mesh does not resolve the bodies under the contact (for example, a body 2 whose elements are much deeper than the contact is long), and refining only the contact edge does not show it: grade the blocks under the contact in depth, or raise the degrees (docs/validation.md, \"Convergence in p\"; analysis.p_check = false turns this check off)",
-        problem.file,
-        100.0 * check.change,
-        100.0 * P_CHANGE_LIMIT,
+    fn over(c: &Option<PCheck>) -> Option<&PCheck> {
+        c.as_ref().filter(|c| c.change > P_CHANGE_LIMIT)
+    }
+    let said = |c: &PCheck| {
+        format!(
+            "{:.1} % of its mean pressure (zone x = {} … {} mm)",
+            100.0 * c.change,
+            short(c.zone[0]),
+            short(c.zone[1])
+        )
+    };
+    let (which, raised, tail) = match (over(&check.first), over(&check.last)) {
+        (None, None) => return None,
+        (Some(first), None) => (
+            format!(
+                "the first contact solve's pressure inside the zone by {}",
+                said(first)
+            ),
+            raised_text(&first.degrees),
+            match &check.last {
+                Some(last) => format!(
+                    "; the run's last state by {} only: it concerns the run's early states",
+                    said(last)
+                ),
+                None => String::new(),
+            },
+        ),
+        (first, Some(last)) => (
+            format!(
+                "the pressure of the run's last state inside the zone by {}",
+                said(last)
+            ),
+            raised_text(&last.degrees),
+            match (first, &check.first) {
+                (Some(f), _) => format!(", and that of its first contact solve by {}", said(f)),
+                (None, Some(f)) => format!("; its first contact solve by {} only", said(f)),
+                (None, None) => String::new(),
+            },
+        ),
+    };
+    Some(warning(
+        "p-check",
+        &problem.file,
+        format!(
+            "the contact pressure is not converged in p: raising {raised} changes {which} (more than {:.0} %){tail}",
+            100.0 * P_CHANGE_LIMIT,
+        ),
     ))
 }
 

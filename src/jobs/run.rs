@@ -14,6 +14,8 @@ use serde_json::{json, Value};
 use std::ops::ControlFlow;
 use std::time::Instant;
 
+mod console;
+
 /// A finished wear run with its set-up.
 pub struct WearRun {
     /// The condensed contact problem.
@@ -98,14 +100,15 @@ pub fn wear_until(
         .wear
         .clone()
         .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
-    let mut spec = spec;
+    // The file's duration and record points as steps, so that `steps` cuts the run the file
+    // describes (its record points in metres, seconds or cycles included).
+    let mut spec = crate::wear_units::resolve_duration(&spec)
+        .map_err(|(key, message)| problem.error(key, message))?;
     let mut records_past_end = Vec::new();
     if let Some(n) = steps {
         // `steps` replaces the file's duration; the snapshots it asks for past the new end are
         // reported in the result (`WearRun::records_past_end`), not dropped in silence.
         spec.steps = n;
-        spec.cycles = None;
-        spec.distance = None;
         records_past_end = spec.record.iter().copied().filter(|&r| r > n).collect();
         spec.record.retain(|&r| r <= n);
     }
@@ -184,24 +187,60 @@ impl WearRun {
     pub fn warnings(&self, problem: &Problem) -> &[String] {
         self.warnings.get_or_init(|| {
             let mut warnings = run_warnings(problem, self);
-            warnings.extend(crate::p_check::resolution_warnings(
-                problem,
-                &self.contact,
-                true,
-            ));
+            warnings.extend(self.resolution_warnings(problem, true));
             warnings
         })
+    }
+
+    /// The depth warnings, and the check in p of the first contact solve and of the run's
+    /// last state when `analysis.p_check` (else `p_check_default`) asks for it.
+    fn resolution_warnings(&self, problem: &Problem, p_check_default: bool) -> Vec<String> {
+        let h = &self.history;
+        // The pressure of the last step: its direction's profile.
+        let last_pressure = match h.steps.last().map(|s| s.direction) {
+            Some("−") => Some(&h.p_minus),
+            Some(_) => Some(&h.p_plus),
+            None => None,
+        };
+        let mut warnings = match last_pressure {
+            Some(p) => crate::p_check::run_depth_warnings(problem, &self.contact, p),
+            None => crate::p_check::depth_warnings(problem, &self.contact),
+        };
+        if !problem.spec.analysis.p_check.unwrap_or(p_check_default) {
+            return warnings;
+        }
+        let last = h.steps.last().map(|s| {
+            if s.direction == "+" {
+                crate::complementarity::Direction::Plus
+            } else {
+                crate::complementarity::Direction::Minus
+            }
+        });
+        let check = match last {
+            // A run with a completed step: its first solve and its last state.
+            Some(direction) if !h.contact_shape.is_empty() => {
+                let check = crate::p_check::p_check_run(
+                    problem,
+                    &self.contact,
+                    &h.contact_shape,
+                    direction,
+                );
+                crate::p_check::run_p_check_warning(problem, check)
+            }
+            _ => crate::p_check::p_check_warning(
+                problem,
+                crate::p_check::p_check(problem, &self.contact),
+            ),
+        };
+        warnings.extend(check);
+        warnings
     }
 
     /// The warnings of a study's run: as [`WearRun::warnings`], but the resolution in p is
     /// checked only where `analysis.p_check` is true (it costs a set-up at p + 2).
     pub fn study_warnings(&self, problem: &Problem) -> Vec<String> {
         let mut warnings = run_warnings(problem, self);
-        warnings.extend(crate::p_check::resolution_warnings(
-            problem,
-            &self.contact,
-            false,
-        ));
+        warnings.extend(self.resolution_warnings(problem, false));
         warnings
     }
 
@@ -290,8 +329,10 @@ impl WearRun {
                 "p_sum": numbers(&p_sum),
                 "shape": numbers(&h.shape),
                 "wear": numbers(&self.wear_of(&h.shape)),
+                "wear_body1": numbers(&h.body_wear[0]),
+                "wear_body2": numbers(&h.body_wear[1]),
             },
-            "snapshots": h.snapshots.iter().map(|s| json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "pressure": numbers(&s.pressure), "shape": numbers(&s.shape), "wear": numbers(&self.wear_of(&s.shape)) })).collect::<Vec<_>>(),
+            "snapshots": h.snapshots.iter().map(|s| json!({ "step": s.step, "half_period": s.half_period, "direction": s.direction, "pressure": numbers(&s.pressure), "shape": numbers(&s.shape), "wear": numbers(&self.wear_of(&s.shape)), "wear_body1": numbers(&s.body_wear[0]), "wear_body2": numbers(&s.body_wear[1]) })).collect::<Vec<_>>(),
             "edge_ends_in_contact": edge_ends_json(&self.edge_ends()),
             "coarse_partner_zones": coarse_zones_json(&self.contact.coarse_partner_zones(&[&h.p_plus, &h.p_minus])),
             "target_mesh": target_mesh_json(&self.contact),
@@ -300,6 +341,7 @@ impl WearRun {
             "unconverged_steps": h.unconverged_steps,
             "oscillating_steps": h.oscillating_steps,
             "worn_depth": numbers(&h.worn_depth),
+            "worn_volume": numbers(&h.body_wear.each_ref().map(|w| crate::wear::worn_volume(&self.contact.points, w, self.contact.thickness))),
             "warnings": self.warnings(problem),
             "setup_seconds": self.setup_seconds,
             "run_seconds": self.run_seconds,
@@ -334,6 +376,11 @@ impl WearRun {
                         (Value::Null, json!(self.steady_check.to_string()))
                     }
                     SteadyCheck::NoCycle => (Value::Null, json!("no complete cycle")),
+                    // A distance from a state the run is not yet heading for, or that does
+                    // not exist on the surface, is not a result: said in words instead.
+                    SteadyCheck::Growing { .. } => {
+                        (Value::Null, json!(self.steady_check.to_string()))
+                    }
                 };
                 summary["steady_distance"] = json!({
                     "pressure": pressure,

@@ -43,6 +43,24 @@ pub enum SteadyCheck {
         /// The '−' half cycle's zone.
         minus: [f64; 2],
     },
+    /// The run's contact zone is still growing towards the steady state's wider one: the
+    /// run is running in, and its distance from the steady state says how much of the zone
+    /// is still to wear in, not how close it has come. With `unbounded`, the steady state
+    /// itself fills the named edge to an end where body 1's surface goes on (a cylinder on a
+    /// flat): no steady state exists on the surface, and the distance would depend on how
+    /// much of it was named.
+    Growing {
+        /// The distance of [`SteadyCheck::Compared`] (dimensionless).
+        pressure: f64,
+        /// Seconds the steady solve took.
+        seconds: f64,
+        /// The run's contact zone in its last cycle: first and last x in contact, mm.
+        run: [f64; 2],
+        /// The steady state's zone, mm.
+        steady: [f64; 2],
+        /// Whether the steady zone reaches an end of the named edge where the surface goes on.
+        unbounded: bool,
+    },
     /// The run has no complete cycle to compare.
     NoCycle,
 }
@@ -61,6 +79,27 @@ impl std::fmt::Display for SteadyCheck {
                 f,
                 "the half cycles touch separate zones (x = {:.2} … {:.2} mm in '+', {:.2} … {:.2} mm in '−'): each wears its own facet with its own rigid motion (the punch rocks), so no steady state with one rigid wear per period exists",
                 plus[0], plus[1], minus[0], minus[1]
+            ),
+            SteadyCheck::Growing {
+                run,
+                steady,
+                unbounded: true,
+                ..
+            } => write!(
+                f,
+                "the contact zone still grows (x = {:.3} … {:.3} mm in the last cycle) and no steady state exists on this surface: the steady state of the named edge fills it to its end (x = {:.3} … {:.3} mm) where body 1's surface goes on, so a distance from it would depend on how much of the surface was named",
+                run[0], run[1], steady[0], steady[1]
+            ),
+            SteadyCheck::Growing {
+                pressure,
+                run,
+                steady,
+                unbounded: false,
+                ..
+            } => write!(
+                f,
+                "the contact zone still grows (x = {:.3} … {:.3} mm in the last cycle, x = {:.3} … {:.3} mm in the steady state): the run is running in, {:.2} % of the peak from the steady state's pressures, which it approaches only as the zone fills",
+                run[0], run[1], steady[0], steady[1], 100.0 * pressure
             ),
             SteadyCheck::NoCycle => write!(f, "no complete cycle"),
         }
@@ -160,10 +199,41 @@ pub fn check(
     let Some(pressure) = relative_difference(&pairs) else {
         return SteadyCheck::Unavailable("the steady state carries no pressure".into());
     };
-    SteadyCheck::Compared {
-        pressure,
-        seconds: start.elapsed().as_secs_f64(),
+    let seconds = start.elapsed().as_secs_f64();
+    let run: Vec<&[f64]> = pairs.iter().map(|(run, _)| *run).collect();
+    let steady: Vec<&[f64]> = pairs.iter().map(|(_, steady)| *steady).collect();
+    let closing = history.steady_distance.map_or(0.0, |d| d.closing);
+    match (zone(&run), zone(&steady)) {
+        // Zones by contact-point index: the points follow body 1's edge, not always x.
+        (Some(r), Some(s))
+            if closing > crate::wear::STEADY_REPORT_LIMIT && (s[0] < r[0] || s[1] > r[1]) =>
+        {
+            let x = |i: usize| contact.points.x[i][0];
+            SteadyCheck::Growing {
+                pressure,
+                seconds,
+                run: [x(r[0]), x(r[1])],
+                steady: [x(s[0]), x(s[1])],
+                unbounded: !contact.edge_ends_in_contact(&steady).is_empty(),
+            }
+        }
+        _ => SteadyCheck::Compared { pressure, seconds },
     }
+}
+
+/// The contact zone of `profiles` (pressures, MPa, at the contact points): the first and
+/// last point where any of them carries more than 1e-9 of their peak (below, the round-off
+/// of a zone's end).
+fn zone(profiles: &[&[f64]]) -> Option<[usize; 2]> {
+    let peak = profiles
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |m, &v| m.max(v));
+    let touching = |i: usize| profiles.iter().any(|p| p[i] > 1e-9 * peak);
+    let n = profiles.first()?.len();
+    let first = (0..n).find(|&i| touching(i))?;
+    let last = (0..n).rev().find(|&i| touching(i))?;
+    Some([first, last])
 }
 
 /// The x ranges (mm) of the two half cycles' contact zones when they share at most one

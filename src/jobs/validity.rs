@@ -22,6 +22,7 @@
 mod strain;
 pub use strain::{contact_strain_warnings, largest_strain, strain_warning, STRAIN_LIMIT};
 
+use super::codes::warning;
 use crate::complementarity::{ContactSolver, Direction, Status};
 use crate::contact::CondensedContact;
 use crate::problem::Problem;
@@ -106,16 +107,20 @@ pub fn half_period_warning(problem: &Problem, change: Result<f64, String>) -> Op
     let change = match change {
         Ok(change) => change,
         Err(why) => {
-            return Some(format!(
-                "warning: {}: wear: could not check whether one half period's wear changes the contact pressure (the half-period scheme and the steady state assume it does not): {why}. Such a failure comes with a very large wear; lower β̃ or the pressure, or check with wear.substeps (docs/validation.md, What a result says about itself)",
-                problem.file
+            return Some(warning(
+                "half-period-unchecked",
+                &problem.file,
+                format!("wear: could not check whether one half period's wear changes the contact pressure: {why}"),
             ))
         }
     };
-    (change > HALF_PERIOD_CHANGE_LIMIT).then(|| format!(
-        "warning: {}: wear: one half period's wear changes the contact pressure by {:.1} % of its peak; the half-period scheme and the steady state hold the pressure constant over a half period, which is only right while that change is small (here the pressures can be off by about half of it). Lower β̃ or the pressure, or check with wear.substeps (docs/validation.md, What a result says about itself)",
-        problem.file,
-        100.0 * change
+    (change > HALF_PERIOD_CHANGE_LIMIT).then(|| warning(
+        "half-period",
+        &problem.file,
+        format!(
+            "wear: one half period's wear changes the contact pressure by {:.1} % of its peak, which the half-period scheme holds constant",
+            100.0 * change
+        ),
     ))
 }
 
@@ -154,12 +159,21 @@ pub fn worn_blocks_depth(problem: &Problem, which: usize) -> Option<(String, f64
     } else {
         (&c.target_body, &c.target_edge)
     };
-    let mesh = problem.mesh(problem.body_index(name).ok()?).ok()?;
+    let b = problem.body_index(name).ok()?;
+    let mesh = problem.mesh(b).ok()?;
+    // A Gmsh body's blocks are its elements: measure through the body instead.
+    let from_gmsh = problem.spec.bodies[b].gmsh.is_some();
     let depth = mesh
         .named_edges
         .get(edge)?
         .iter()
-        .map(|&(e, local)| depth_across_block(&mesh, e, local))
+        .map(|&(e, local)| {
+            if from_gmsh {
+                depth_through_body(&mesh, e, local)
+            } else {
+                depth_across_block(&mesh, e, local)
+            }
+        })
         .fold(f64::INFINITY, f64::min);
     depth.is_finite().then(|| (name.clone(), depth))
 }
@@ -198,6 +212,62 @@ fn depth_across_block(mesh: &crate::mesh::Mesh, element: usize, local: usize) ->
         .fold(f64::INFINITY, f64::min)
 }
 
+/// The least depth of the body under side `local` of `element` (on the body's boundary), over
+/// [`DEPTH_SAMPLES`] places along the side: the distance along the inward normal to where it
+/// next crosses the body's boundary (each boundary edge taken as 16 chords), mm.
+fn depth_through_body(mesh: &crate::mesh::Mesh, element: usize, local: usize) -> f64 {
+    const CHORDS: usize = 16;
+    let boundary: Vec<[crate::geometry::Point; 2]> = mesh
+        .edges
+        .iter()
+        .filter(|e| e.elements.len() == 1)
+        .flat_map(|e| {
+            let (el, l) = e.elements[0];
+            (0..CHORDS).map(move |k| {
+                let t = |k: usize| -1.0 + 2.0 * k as f64 / CHORDS as f64;
+                [
+                    mesh.point_on_edge(el, l, t(k)),
+                    mesh.point_on_edge(el, l, t(k + 1)),
+                ]
+            })
+        })
+        .collect();
+    (0..DEPTH_SAMPLES)
+        .map(|k| {
+            let t = -1.0 + 2.0 * k as f64 / (DEPTH_SAMPLES - 1) as f64;
+            let start = mesh.point_on_edge(element, local, t);
+            let (tangent, normal) = mesh.edge_frame(element, local, t);
+            let inward = [-normal[0], -normal[1]];
+            // The ray leaves from its own edge (and its neighbours' at the side's ends), met
+            // at s ≈ 0: crossings within 1e-6 of the side's length are those.
+            let least = 1e-6 * tangent[0].hypot(tangent[1]);
+            boundary
+                .iter()
+                .filter_map(|&[a, b]| ray_crossing(start, inward, a, b))
+                .filter(|&s| s > least)
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Where the ray x + s d (s ≥ 0) crosses the segment a b: its s, if it does.
+fn ray_crossing(
+    x: crate::geometry::Point,
+    d: crate::geometry::Point,
+    a: crate::geometry::Point,
+    b: crate::geometry::Point,
+) -> Option<f64> {
+    let e = [b[0] - a[0], b[1] - a[1]];
+    let denominator = d[0] * e[1] - d[1] * e[0];
+    if denominator.abs() < 1e-300 {
+        return None;
+    }
+    let w = [a[0] - x[0], a[1] - x[1]];
+    let s = (w[0] * e[1] - w[1] * e[0]) / denominator;
+    let along = (w[0] * d[1] - w[1] * d[0]) / denominator;
+    ((0.0..=1.0).contains(&along) && s >= 0.0).then_some(s)
+}
+
 /// The distance from block parameters `on_side` to `opposite`, projected on the normal of
 /// the side through `on_side` (whose tangent is ∂x/∂u when `along_u`, else ∂x/∂v), mm.
 fn depth_between(
@@ -229,13 +299,16 @@ pub fn wear_depth_warnings(problem: &Problem, history: &WearHistory) -> Vec<Stri
         .filter_map(|b| {
             let depth = history.worn_depth[b];
             let (name, size) = worn_blocks_depth(problem, b)?;
-            (depth > GEOMETRY_LIMIT * size).then(|| format!(
-                "warning: {}: the run wore up to {:.4e} mm off body {} (\"{name}\"), {} the {:.4} mm depth of the blocks that carry its contact edge (their thinnest, across the block from the edge); the meshes are never updated (wear enters as a gap only), so a worn depth that is not small against them is outside the model: a pad worn through still counts with its stiffness. Shorten the run or check the wear coefficient",
-                problem.file,
-                depth,
-                b + 1,
-                share(depth / size),
-                size
+            (depth > GEOMETRY_LIMIT * size).then(|| warning(
+                "worn-deep",
+                &problem.file,
+                format!(
+                    "the run wore up to {:.4e} mm off body {} (\"{name}\"), {} the {:.4} mm depth under its contact edge: outside the model, whose meshes are never updated",
+                    depth,
+                    b + 1,
+                    share(depth / size),
+                    size
+                ),
             ))
         })
         .collect()
@@ -305,9 +378,10 @@ pub fn plate_motion_warning(
     } else {
         return None;
     };
-    Some(format!(
-        "warning: {}: under the load the plate {what} but linear elasticity assumes small displacements and rotations, so these results are outside its range. Check the Young's moduli and the load (units: MPa and mm)",
-        problem.file
+    Some(warning(
+        "large-motion",
+        &problem.file,
+        format!("under the load the plate {what} outside small displacements and rotations"),
     ))
 }
 
@@ -383,9 +457,10 @@ pub fn steady_checks(
         .as_ref()
         .is_some_and(|c| c.method == "penalty")
     {
-        warnings.push(format!(
-            "warning: {}: contact.method = \"penalty\" is not used by `steady`, which solves exact contact (its checks too); `run` and `contact` use the penalty",
-            problem.file
+        warnings.push(warning(
+            "penalty-steady",
+            &problem.file,
+            "contact.method = \"penalty\" is not used by `steady`, which solves exact contact (its checks too); `run` and `contact` use the penalty",
         ));
     }
     warnings.extend(displacement_warning(problem, contact, &mut solver, first));

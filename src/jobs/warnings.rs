@@ -2,6 +2,7 @@
 //! or not resolved by body 2's mesh, and what the model leaves out. Each as a summary.json
 //! entry and a console warning.
 
+use super::codes::warning;
 use crate::contact::CondensedContact;
 use crate::jobs::json::{number, numbers};
 use crate::problem::Problem;
@@ -35,10 +36,13 @@ pub fn edge_ends_warning(problem: &Problem, ends: &[crate::contact::EdgeEnd]) ->
         .iter()
         .map(|e| format!("({:.4}, {:.4}) with {:.4} MPa", e.x[0], e.x[1], e.pressure))
         .collect();
-    Some(format!(
-        "warning: {}: the contact reaches the end of contact edge \"{edge}\" at {} where body 1's surface goes on: the contact zone is bounded by the model, not found by it; name a longer edge (docs/problem-files.md, [contact])",
-        problem.file,
-        at.join(" and ")
+    Some(warning(
+        "edge-end",
+        &problem.file,
+        format!(
+            "the contact reaches the end of contact edge \"{edge}\" at {} where body 1's surface goes on: the zone is bounded by the named edge, not found",
+            at.join(" and ")
+        ),
     ))
 }
 
@@ -90,13 +94,16 @@ fn linear_elements_warning(problem: &Problem) -> Option<String> {
         .map(String::as_str)
         .collect();
     (!linear.is_empty()).then(|| {
-        format!(
-            "warning: {}: {} p = 1 (linear elements): near the contact the pressure converges slowly and needs element layers in depth as fine as along the edge, which the checks along the contact edge do not see (Hertz with 2 mm layers under a 6 mm zone: 6 % high however finely the edge is cut). Use p ≥ 2 (docs/convergence.md)",
-            problem.file,
-            match linear.as_slice() {
-                [one] => format!("body \"{one}\" has"),
-                _ => format!("bodies \"{}\" and \"{}\" have", linear[0], linear[1]),
-            }
+        warning(
+            "linear-elements",
+            &problem.file,
+            format!(
+                "{} p = 1 (linear elements): the pressure near the contact converges slowly; use p ≥ 2",
+                match linear.as_slice() {
+                    [one] => format!("body \"{one}\" has"),
+                    _ => format!("bodies \"{}\" and \"{}\" have", linear[0], linear[1]),
+                }
+            ),
         )
     })
 }
@@ -115,17 +122,17 @@ fn trunk_space_warning(problem: &Problem) -> Option<String> {
     let non_affine = [&c.body, &c.target_body].into_iter().any(|name| {
         // At p = 1 the two spaces are the same (four vertex modes).
         problem.body_index(name).is_ok_and(|b| {
+            let body = &problem.spec.bodies[b];
+            // A Gmsh mesh's quadrilaterals are taken as general ones.
             problem.body_discretisation(b).p >= 2
-                && problem.spec.bodies[b]
-                    .blocks
-                    .iter()
-                    .any(not_a_parallelogram)
+                && (body.gmsh.is_some() || body.blocks.iter().any(not_a_parallelogram))
         })
     });
     (non_affine && problem.discretisation.space == crate::basis::Space::Trunk).then(|| {
-        format!(
-            "warning: {}: analysis.space = \"trunk\": the trunk space has fewer internal modes than the tensor space, which elements mapped from arcs or from quadrilaterals that are not parallelograms need, and is not validated for contact on them: on a cylinder meshed with arcs its pressure was 2.8 % of the peak off Hertz between two points where the tensor space is within 0.2 %, and the check in p did not see it. Use \"tensor\" (the default) for results",
-            problem.file
+        warning(
+            "trunk-space",
+            &problem.file,
+            "analysis.space = \"trunk\" on elements mapped from arcs or from quadrilaterals that are not parallelograms: not validated for contact; use \"tensor\" (the default)",
         )
     })
 }
@@ -153,15 +160,20 @@ pub fn zone_warnings(
     warnings.extend(linear_elements_warning(problem));
     warnings.extend(trunk_space_warning(problem));
     if let Some(n) = contact.too_few_points_in_contact(pressures) {
-        warnings.push(format!(
-            "warning: {}: only {n} contact point(s) carry pressure: the mesh does not resolve the contact zone, and the pressure there is a mean over the point's share of the edge, not a profile. Refine body 1's contact edge (smaller elements or a higher p) until the zone spans several points",
-            problem.file
+        warnings.push(warning(
+            "few-points",
+            &problem.file,
+            format!("only {n} contact point(s) carry pressure: the mesh does not resolve the contact zone; refine body 1's contact edge"),
         ));
     }
     if let Some(j) = contact.size_jump_in_contact(pressures) {
-        warnings.push(format!(
-            "warning: {}: body 1's contact elements change length by {:.0} : 1 at ({:.4}, {:.4}), inside the contact: pressures next to such a step can dip far below their neighbours (57 % at one point with a 30 : 1 step). Grade the elements towards it by at most {:.0} : 1 from one to the next",
-            problem.file, j.ratio, j.x[0], j.x[1], crate::contact::resolution::SIZE_JUMP
+        warnings.push(warning(
+            "element-step",
+            &problem.file,
+            format!(
+                "body 1's contact elements change length by {:.0} : 1 at ({:.4}, {:.4}), inside the contact: the pressures next to it can dip far below their neighbours",
+                j.ratio, j.x[0], j.x[1]
+            ),
         ));
     }
     let mortar = problem
@@ -170,14 +182,22 @@ pub fn zone_warnings(
         .as_ref()
         .is_some_and(|c| c.discretisation == "mortar");
     if let (true, Some(x)) = (mortar, contact.unmatched_line_in_contact(pressures)) {
-        warnings.push(format!(
-            "warning: {}: contact.align_target_mesh = false leaves a line of body 2 inside one of body 1's contact elements, inside the contact (at ({:.4}, {:.4})): body 2's trace kinks where the mortar basis cannot follow it, and the pressure near body 1's element ends can be off by several percent of its peak (a ball in a cup: 5.8 %). Keep the default align_target_mesh = true, or match body 2's mesh lines to body 1's",
-            problem.file, x[0], x[1]
+        warnings.push(warning(
+            "unaligned-line",
+            &problem.file,
+            format!(
+                "a line of body 2 lies inside one of body 1's contact elements, inside the contact (at ({:.4}, {:.4})), not aligned: the pressure near body 1's element ends can be off by several percent",
+                x[0], x[1]
+            ),
         ));
     } else if let Some(x) = contact.unmatched_line_in_contact(pressures) {
-        warnings.push(format!(
-            "warning: {}: contact.discretisation = \"collocation\" with a line of body 2 inside one of body 1's contact elements (at ({:.4}, {:.4})): one-point partners make the pressure oscillate there by several percent of its peak. Use the default \"mortar\", or match body 2's mesh lines to body 1's",
-            problem.file, x[0], x[1]
+        warnings.push(warning(
+            "collocation-line",
+            &problem.file,
+            format!(
+                "contact.discretisation = \"collocation\" with a line of body 2 inside one of body 1's contact elements (at ({:.4}, {:.4})): the pressure oscillates there by several percent",
+                x[0], x[1]
+            ),
         ));
     }
     let misfit =
@@ -188,24 +208,32 @@ pub fn zone_warnings(
         } else {
             "falls away"
         };
-        warnings.push(format!(
-            "warning: {}: between body 1's contact points near ({:.4}, {:.4}), where the bodies touch or can, body 2's surface {what} by {:.3e} mm from what the points see (a ridge, groove or step narrower than their spacing, or a curvature that body 1's elements do not follow, as linear ones do not): the contact constraints do not see it, and the pressures there can be far off. Put mesh lines of body 1 at the feature's ends, or refine body 1's contact edge there until its points resolve it (docs/problem-files.md, Meshing the contact fine enough)",
-            problem.file, m.x[0], m.x[1], m.misfit.abs()
+        warnings.push(warning(
+            "narrow-feature",
+            &problem.file,
+            format!(
+                "between body 1's contact points near ({:.4}, {:.4}) body 2's surface {what} by {:.3e} mm from what the points see: the pressures there can be far off",
+                m.x[0], m.x[1], m.misfit.abs()
+            ),
         ));
     }
     for z in contact.coarse_partner_zones(pressures) {
         if z.body == 1 {
             let width = (z.to[0] - z.from[0]).hypot(z.to[1] - z.from[1]);
-            warnings.push(format!(
-                "warning: {}: the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 1 of {:.4} mm, long against the zone's {:.4} mm: body 1's mesh does not resolve the zone's end, and the pressures can be off by several percent of the peak, inside the zone too. Refine body 1 there (elements no longer than a quarter of the zone near its ends) or put a mesh line at the zone's end (docs/problem-files.md, Meshing the contact fine enough)",
-                problem.file, z.from[0], z.from[1], z.to[0], z.to[1], z.element_length, width
+            warnings.push(warning(
+                "zone-end-body1",
+                &problem.file,
+                format!(
+                    "the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 1 of {:.4} mm, long against the zone's {:.4} mm: the pressures can be off by several percent",
+                    z.from[0], z.from[1], z.to[0], z.to[1], z.element_length, width
+                ),
             ));
             continue;
         }
         // With a lower degree on body 2 its elements are compared as if that many times
         // longer: say so, or "body 2's 5 mm, coarser than body 1's 7.5 mm" reads as nonsense.
         let ratio = z.partner_degree_ratio;
-        let (degrees, counted, raise) = if ratio > 1.0 {
+        let (degrees, counted) = if ratio > 1.0 {
             let times = if ratio.fract() == 0.0 {
                 format!("{ratio:.0}")
             } else {
@@ -217,14 +245,17 @@ pub fn zone_warnings(
                     z.partner_element_length * ratio
                 ),
                 ", counted at body 1's degree,",
-                ", or raise its degree",
             )
         } else {
-            (String::new(), "", "")
+            (String::new(), "")
         };
-        warnings.push(format!(
-            "warning: {}: the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 2 of {:.4} mm{degrees}, coarser than body 1's {:.4} mm there, and only {:.1} of body 2's elements{counted} span it: the pressure near the zone's ends can be off by a few percent of its peak (body 2's discretisation error). Refine body 2 there to no coarser than body 1{raise}, or to about {} elements across the zone, or put one of its mesh lines at the zone's end (docs/validation.md, Mortar contact)",
-            problem.file, z.from[0], z.from[1], z.to[0], z.to[1], z.partner_element_length, z.element_length, z.partner_elements_across, crate::contact::resolution::RESOLVED_ACROSS
+        warnings.push(warning(
+            "zone-end-body2",
+            &problem.file,
+            format!(
+                "the contact zone from ({:.4}, {:.4}) to ({:.4}, {:.4}) ends inside an element of body 2 of {:.4} mm{degrees}, coarser than body 1's {:.4} mm there, and only {:.1} of body 2's elements{counted} span it: the pressure near the zone's ends can be off by a few percent",
+                z.from[0], z.from[1], z.to[0], z.to[1], z.partner_element_length, z.element_length, z.partner_elements_across
+            ),
         ));
     }
     warnings
@@ -293,27 +324,34 @@ pub fn model_warnings(
         // crowned pad sliding 2.5 zone widths wore body 2 at the track's centre about 3 times
         // faster than the same wear spread over the track, without a word).
         if zone > 0.0 && stroke > STROKE_LIMIT * zone {
-            warnings.push(format!(
-                "warning: {}: wear.amplitude: the stroke 2u₀ = {stroke:.4} mm is {:.0} % of the contact zone's {zone:.4} mm and body 2 wears: the model keeps its wear at the partner points under the zone, while in reality it is spread over a track the stroke longer (README, Fixed contact pairs); body 2's worn depth is overstated up to about (2u₀ + zone)/zone = {:.1} times",
-                problem.file,
-                100.0 * stroke / zone,
-                (stroke + zone) / zone
+            warnings.push(warning(
+                "stroke-body2",
+                &problem.file,
+                format!(
+                    "wear.amplitude: the stroke 2u₀ = {stroke:.4} mm is {:.0} % of the contact zone's {zone:.4} mm and body 2 wears: its worn depth is overstated up to about {:.1} times (fixed contact pairs)",
+                    100.0 * stroke / zone,
+                    (stroke + zone) / zone
+                ),
             ));
         }
     }
     if wear.sliding != "monotonic" && stroke > STROKE_LIMIT * length {
-        warnings.push(format!(
-            "warning: {}: wear.amplitude: the stroke 2u₀ = {:.4} mm is {:.0} % of the contact edge's {:.4} mm; the model keeps each contact point's partner fixed, which stands for a stroke small against the contact (README, Fixed contact pairs), so these results describe a shorter stroke",
-            problem.file,
-            2.0 * wear.amplitude,
-            100.0 * 2.0 * wear.amplitude / length,
-            length
+        warnings.push(warning(
+            "stroke",
+            &problem.file,
+            format!(
+                "wear.amplitude: the stroke 2u₀ = {:.4} mm is {:.0} % of the contact edge's {:.4} mm: the fixed contact pairs describe a shorter stroke",
+                2.0 * wear.amplitude,
+                100.0 * 2.0 * wear.amplitude / length,
+                length
+            ),
         ));
     }
     if wear.sliding == "monotonic" && wear.body2.is_some() {
-        warnings.push(format!(
-            "warning: {}: wear.body2 under monotonic sliding: body 2's wear is kept at the partner points of body 1, as if the same part of body 2 stayed under body 1; in reality it is spread over the whole sliding track (README, Body-2 wear at the partner points)",
-            problem.file
+        warnings.push(warning(
+            "monotonic-body2",
+            &problem.file,
+            "wear.body2 under monotonic sliding: body 2's wear is kept at the partner points of body 1, not spread over its sliding track",
         ));
     }
     warnings
@@ -353,9 +391,13 @@ pub fn fixed_plate_load_warning(problem: &Problem, _contact: &CondensedContact) 
         let (f, _) = t.resultant(&mesh, edges, p, thickness, [0.0; 2]);
         [sum[0] + f[0], sum[1] + f[1]]
     });
-    Some(format!(
-        "warning: {}: plate.motion = \"fixed\": the tractions on the plate edge \"{}\" (resultant [{fx:.4e}, {fz:.4e}] N) are carried by the fixed plate and do not load the contact; only a negative initial gap and tractions on body 1's other edges press a fixed plate's body onto body 2. To press it with these loads, let the plate move (plate.motion = \"vertical\" or \"vertical_rotation\")",
-        problem.file, plate.edge
+    Some(warning(
+        "fixed-plate-load",
+        &problem.file,
+        format!(
+            "plate.motion = \"fixed\": the tractions on the plate edge \"{}\" (resultant [{fx:.4e}, {fz:.4e}] N) are carried by the fixed plate and do not load the contact",
+            plate.edge
+        ),
     ))
 }
 
@@ -402,10 +444,13 @@ pub fn inclined_contact_warning(problem: &Problem, contact: &CondensedContact) -
     } else {
         "with tan θ ≥ 1/μ friction locks the plate in one sliding direction (no balance)".into()
     };
-    Some(format!(
-        "warning: {}: plate.motion: the contact's mean normal is inclined by {:.1}° from the vertical, along which the plate moves while it is held sideways: the hold takes the horizontal part of the contact force, and {factors}, μ = {mu}. A model turned as a whole does not give the turned results; if the plate really moves along the contact normal, turn the model so that the contact faces up or down",
-        problem.file,
-        theta.to_degrees()
+    Some(warning(
+        "inclined-contact",
+        &problem.file,
+        format!(
+            "plate.motion: the contact's mean normal is inclined by {:.1}° from the vertical, along which the plate moves: {factors}, μ = {mu}",
+            theta.to_degrees()
+        ),
     ))
 }
 
@@ -450,9 +495,12 @@ pub fn penalty_warning(problem: &Problem, contact: &CondensedContact) -> Option<
         .filter(|r| r.is_finite())
         .fold(0.0f64, f64::max);
     (ratio > PENALTY_SOFTNESS_LIMIT).then(|| {
-        format!(
-            "warning: {}: contact.penalty: c_n = {stiffness:e} MPa/mm is soft against the bodies (its compliance is {:.3e} times theirs at a contact point): the bodies interpenetrate by -p/c_n and the pressures differ from the exact contact's by up to about that share; raise c_n or use method = \"active_set\"",
-            problem.file, ratio
+        warning(
+            "soft-penalty",
+            &problem.file,
+            format!(
+                "contact.penalty: c_n = {stiffness:e} MPa/mm is soft against the bodies (its compliance is {ratio:.3e} times theirs at a contact point): the pressures differ from exact contact's by up to about that share"
+            ),
         )
     })
 }
@@ -501,7 +549,7 @@ pub fn steady_warnings(
 /// punch's, which passes). A check on the steady state itself missed a coarse steady state
 /// (docs/validation.md), so the first contact's is kept, and said to be.
 fn for_a_steady_state(warning: String) -> String {
-    format!("{warning}. For a steady state this measures the first contact: where the steady zones are wider (a crown that wears away), compare with the steady state at the raised degree (`--set analysis.p=…`)")
+    format!("{warning}; for a steady state this measures the first contact")
 }
 
 /// The warnings of a study's steady state: as [`steady_warnings`], but the resolution in p

@@ -31,6 +31,8 @@ pub struct Figure<'a> {
     pub series: Vec<Series<'a>>,
     /// Logarithmic y axis (non-positive values are left out).
     pub log_y: bool,
+    /// Whether the y axis reaches 0 (for depths, whose size the reader judges from 0).
+    pub zero_y: bool,
 }
 
 /// Pixel size of every figure.
@@ -78,6 +80,7 @@ pub fn line_plot(
             })
             .collect(),
         log_y: false,
+        zero_y: false,
     };
     write_figure(path, &figure)
 }
@@ -114,9 +117,12 @@ fn prepare(figure: &Figure) -> Option<(Vec<Points>, Range, Range)> {
         })
     };
     let (x0, x1) = range(&mut all().map(|p| p.0));
-    let (y0, y1) = range(&mut all().map(|p| p.1));
+    let (mut y0, mut y1) = range(&mut all().map(|p| p.1));
     if !(x0.is_finite() && y0.is_finite()) {
         return None;
+    }
+    if figure.zero_y && !figure.log_y {
+        (y0, y1) = (y0.min(0.0), y1.max(0.0));
     }
     let pad = |lo: f64, hi: f64| {
         let d = if hi > lo {
@@ -310,6 +316,7 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
             y_label: "pressure (MPa)",
             series,
             log_y: false,
+            zero_y: false,
         };
         write_figure(&dir.join(format!("{stem}.svg")), &figure)?;
     }
@@ -329,9 +336,11 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
             y_label: "shape (mm)",
             series,
             log_y: false,
+            zero_y: false,
         };
         write_figure(&dir.join("shape_evolution.svg"), &figure)?;
     }
+    wear_figure(dir, name, &x, h)?;
     let by_direction = |d: &str, value: &dyn Fn(&crate::wear::StepRecord) -> f64| {
         h.steps
             .iter()
@@ -356,6 +365,7 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
         y_label: "wear dissipation (N·mm)",
         series,
         log_y: false,
+        zero_y: false,
     };
     write_figure(&dir.join("dissipation.svg"), &figure)?;
     let delta: Vec<(f64, f64)> = h
@@ -373,6 +383,66 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
             points: delta,
         }],
         log_y: true,
+        zero_y: false,
     };
     write_figure(&dir.join("delta_w.svg"), &figure)
+}
+
+/// `wear.svg`: the depth worn off each body that wears, and their sum, at the end of the run,
+/// in µm when the largest is below 0.1 mm: the wear's own scale, which the shape's (the
+/// initial gap plus the wear) hides on a curved body.
+fn wear_figure(
+    dir: &Path,
+    name: &str,
+    x: &[f64],
+    h: &crate::wear::WearHistory,
+) -> Result<(), String> {
+    let [one, two] = &h.body_wear;
+    let largest = one
+        .iter()
+        .zip(two)
+        .map(|(a, b)| (a + b).abs())
+        .fold(0.0f64, f64::max);
+    if largest == 0.0 || !largest.is_finite() {
+        return Ok(());
+    }
+    let (scale, unit) = if largest < 0.1 {
+        (1000.0, "wear (µm)")
+    } else {
+        (1.0, "wear (mm)")
+    };
+    let curve = |v: &dyn Fn(usize) -> f64| {
+        (0..x.len())
+            .map(|i| (x[i], scale * v(i)))
+            .collect::<Vec<_>>()
+    };
+    let wears = |w: &[f64]| w.iter().any(|&v| v != 0.0);
+    let mut series = Vec::new();
+    if wears(one) {
+        series.push(Series {
+            label: "body 1",
+            points: curve(&|i| one[i]),
+        });
+    }
+    if wears(two) {
+        series.push(Series {
+            label: "body 2 (at the partner points)",
+            points: curve(&|i| two[i]),
+        });
+    }
+    if series.len() == 2 {
+        series.push(Series {
+            label: "both bodies",
+            points: curve(&|i| one[i] + two[i]),
+        });
+    }
+    let figure = Figure {
+        title: format!("{name}: depth worn off each body"),
+        x_label: "x (mm)",
+        y_label: unit,
+        series,
+        log_y: false,
+        zero_y: true,
+    };
+    write_figure(&dir.join("wear.svg"), &figure)
 }

@@ -72,6 +72,7 @@ impl WearIntegrator {
             shape: vec![],
             contact_shape: vec![],
             worn_depth: [0.0; 2],
+            body_wear: [vec![], vec![]],
             solves: 0,
             unconverged_steps: 0,
             oscillating_steps: 0,
@@ -321,6 +322,7 @@ impl WearIntegrator {
                     thermal_state: heat.as_ref().map(|_| ws.solved_modal.clone()),
                     shape: written.clone(),
                     contact_shape: contact_shape.clone(),
+                    body_wear: self.body_wear(points, initial, &written, &worn),
                 });
             }
             if steady_now {
@@ -337,10 +339,40 @@ impl WearIntegrator {
         if let Some(h) = &heat {
             hist.thermal = Some(h.finish(ws.solved_thermal.clone(), ws.solved_modal.clone()));
         }
-        for (depth, w) in hist.worn_depth.iter_mut().zip(&worn) {
+        hist.body_wear = self.body_wear(points, initial, &hist.shape, &worn);
+        for (depth, w) in hist.worn_depth.iter_mut().zip(&hist.body_wear) {
             *depth = w.iter().cloned().fold(0.0, f64::max);
         }
         hist
+    }
+
+    /// Each body's wear (mm) at `shape`, a shape of the run started from `initial`, with each
+    /// body's wear summed so far in `summed` (see [`super::body_wear`]).
+    fn body_wear(
+        &self,
+        points: &ContactPoints,
+        initial: &[f64],
+        shape: &[f64],
+        summed: &[Vec<f64>; 2],
+    ) -> [Vec<f64>; 2] {
+        let change: Vec<f64> = shape.iter().zip(initial).map(|(g, g0)| g - g0).collect();
+        // Where no pressure ever acted, the shares at 1 MPa: only round-off is split there.
+        let at_unit_pressure = |body: usize| -> f64 {
+            self.laws
+                .iter()
+                .zip(&self.law_bodies)
+                .filter(|(_, &b)| b == body)
+                .map(|(l, _)| l.beta * self.sliding(l.a))
+                .sum()
+        };
+        let (one, two) = (at_unit_pressure(0), at_unit_pressure(1));
+        let share = if one + two > 0.0 {
+            one / (one + two)
+        } else {
+            1.0
+        };
+        let shifted = self.spec.shape_zero_at.is_some();
+        super::body_wear::split(points, &change, summed, shifted, share)
     }
 
     /// Add `k` half periods of each wearing body's wear at `pressure` (MPa) to `worn` (mm,

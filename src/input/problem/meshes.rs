@@ -9,10 +9,11 @@
 
 use std::sync::{Arc, Mutex};
 
+use super::gmsh_body::GmshBlocks;
 use super::{within, Problem, ProblemError, ProblemSpec, MAX_COORDINATE};
 use crate::geometry::{Block, EdgeShape};
 use crate::mesh::{Mesh, MeshBlock};
-use crate::schema::{BlockSpec, LinesSpec};
+use crate::schema::{BlockSpec, GmshSpec, LinesSpec};
 
 /// How many sets of meshes the process keeps for reuse (the most recently used).
 const MEMO_SIZE: usize = 4;
@@ -21,11 +22,15 @@ const MEMO_SIZE: usize = 4;
 /// equal to their own, so a hit is the mesh a fresh build would give.
 static MEMO: Mutex<Vec<Arc<BuiltMeshes>>> = Mutex::new(Vec::new());
 
+/// A Gmsh body's inputs: its section and its file's length and modification time (a file
+/// written again in the same process, as a study or a Python session may, is read again).
+type GmshInputs = Option<(GmshSpec, Option<(u64, std::time::SystemTime)>)>;
+
 /// What a problem's meshes are built from and nothing else.
 #[derive(Clone, Debug, PartialEq)]
 struct MeshInputs {
-    /// Each body's name (the contact names bodies) and blocks.
-    bodies: Vec<(String, Vec<BlockSpec>)>,
+    /// Each body's name (the contact names bodies), blocks and Gmsh file.
+    bodies: Vec<(String, Vec<BlockSpec>, GmshInputs)>,
     /// Material names in order: a block's material is an index into them.
     materials: Vec<String>,
     /// The contact's body, edge, target body and target edge, when body 2 is aligned.
@@ -38,29 +43,50 @@ impl MeshInputs {
         Some([&c.body, &c.edge, &c.target_body, &c.target_edge])
     }
 
-    fn of(spec: &ProblemSpec) -> MeshInputs {
+    fn of(problem: &Problem) -> MeshInputs {
+        let spec = &problem.spec;
         MeshInputs {
             bodies: spec
                 .bodies
                 .iter()
-                .map(|b| (b.name.clone(), b.blocks.clone()))
+                .map(|b| {
+                    (
+                        b.name.clone(),
+                        b.blocks.clone(),
+                        gmsh_inputs(problem, &b.gmsh),
+                    )
+                })
                 .collect(),
             materials: spec.materials.keys().cloned().collect(),
             alignment: MeshInputs::alignment_of(spec).map(|a| a.map(String::clone)),
         }
     }
 
-    /// Whether `spec` gives these inputs (compared without copying it).
-    fn matches(&self, spec: &ProblemSpec) -> bool {
+    /// Whether `problem` gives these inputs (compared without copying its blocks).
+    fn matches(&self, problem: &Problem) -> bool {
+        let spec = &problem.spec;
         self.bodies.len() == spec.bodies.len()
             && self
                 .bodies
                 .iter()
                 .zip(&spec.bodies)
-                .all(|((name, blocks), body)| *name == body.name && *blocks == body.blocks)
+                .all(|((name, blocks, gmsh), body)| {
+                    *name == body.name
+                        && *blocks == body.blocks
+                        && *gmsh == gmsh_inputs(problem, &body.gmsh)
+                })
             && self.materials.iter().eq(spec.materials.keys())
             && self.alignment.as_ref().map(|a| a.each_ref()) == MeshInputs::alignment_of(spec)
     }
+}
+
+fn gmsh_inputs(problem: &Problem, gmsh: &Option<GmshSpec>) -> GmshInputs {
+    gmsh.as_ref().map(|g| {
+        let stamp = std::fs::metadata(problem.gmsh_path(g))
+            .ok()
+            .and_then(|m| Some((m.len(), m.modified().ok()?)));
+        (g.clone(), stamp)
+    })
 }
 
 /// Body 2's mesh with the lines added under body 1's element ends.
@@ -97,7 +123,7 @@ impl BuiltMeshes {
             .collect::<Result<Vec<_>, _>>()?;
         let aligned = problem.align_target(&given)?;
         Ok(BuiltMeshes {
-            inputs: MeshInputs::of(&problem.spec),
+            inputs: MeshInputs::of(problem),
             given,
             aligned,
         })
@@ -117,7 +143,7 @@ impl BuiltMeshes {
         // A poisoned lock only means another thread panicked while holding it; the entries
         // are immutable, so the list is still sound.
         let memo = || MEMO.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(hit) = memo().iter().find(|m| m.inputs.matches(&problem.spec)) {
+        if let Some(hit) = memo().iter().find(|m| m.inputs.matches(problem)) {
             return Ok(Arc::clone(hit));
         }
         // Built outside the lock: two threads may build the same set; both are equal.
@@ -134,7 +160,7 @@ impl Problem {
     /// changed since (then built again from it).
     fn meshes(&self) -> Result<Arc<BuiltMeshes>, ProblemError> {
         match &self.meshes {
-            Some(built) if built.inputs.matches(&self.spec) => Ok(Arc::clone(built)),
+            Some(built) if built.inputs.matches(self) => Ok(Arc::clone(built)),
             _ => BuiltMeshes::of(self),
         }
     }
@@ -173,7 +199,8 @@ impl Problem {
         let (Ok(b1), Ok(b2)) = (self.body_index(&c.body), self.body_index(&c.target_body)) else {
             return Ok(None);
         };
-        if b1 == b2 {
+        // A Gmsh mesh is kept as it is: lines cannot be cut through unstructured elements.
+        if b1 == b2 || self.spec.bodies[b2].gmsh.is_some() {
             return Ok(None);
         }
         let (mesh1, mesh2) = (&given[b1], &given[b2]);
@@ -202,6 +229,22 @@ impl Problem {
     /// Build the mesh of body `b` from its blocks, as the problem file gives it.
     fn build_as_given(&self, b: usize) -> Result<Mesh, ProblemError> {
         let body = &self.spec.bodies[b];
+        match (&body.gmsh, body.blocks.is_empty()) {
+            (Some(gmsh), true) => return self.build_from_gmsh(b, gmsh),
+            (Some(_), false) => {
+                return Err(self.error(
+                    format!("bodies[{b}]"),
+                    "gives both blocks and a gmsh mesh: give one",
+                ))
+            }
+            (None, true) => {
+                return Err(self.error(
+                    format!("bodies[{b}]"),
+                    "has no mesh: give [[bodies.blocks]] or [bodies.gmsh]",
+                ))
+            }
+            (None, false) => {}
+        }
         let material_names: Vec<&String> = self.spec.materials.keys().collect();
         let mut blocks = Vec::new();
         for (k, bs) in body.blocks.iter().enumerate() {
@@ -319,6 +362,27 @@ impl Problem {
                 _ => format!("bodies[{b}].blocks"),
             };
             self.error(key, e.to_string())
+        })
+    }
+
+    /// Build the mesh of body `b` from its Gmsh file; errors name the Gmsh element.
+    fn build_from_gmsh(&self, b: usize, spec: &GmshSpec) -> Result<Mesh, ProblemError> {
+        let GmshBlocks { blocks, tags } = self.gmsh_blocks(b, spec)?;
+        Mesh::build(blocks).map_err(|e| {
+            use crate::mesh::MeshError;
+            let key = format!("bodies[{b}].gmsh.file");
+            let message = match &e {
+                MeshError::Hanging { x, z } => format!(
+                    "the mesh is not conforming: a node at ({x}, {z}) mm lies inside an element edge (do neighbouring surfaces share their curve's nodes? in Gmsh, fragment the surfaces: BooleanFragments, or Coherence)"
+                ),
+                MeshError::Overlap { block }
+                | MeshError::Disconnected { block }
+                | MeshError::Folded { block, .. } => {
+                    format!("element {}: {}", tags[*block], e.to_string().replacen(&format!("block {block}"), "it", 1))
+                }
+                _ => e.to_string(),
+            };
+            self.error(key, message)
         })
     }
 

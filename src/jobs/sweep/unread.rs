@@ -225,10 +225,14 @@ pub fn warnings(file: &str, job: Job, variants: &[Variant]) -> Vec<String> {
                 return None;
             }
             let entry = unread(&o.key, job, variants.iter().map(|v| &v.problem))?;
-            Some(format!(
-                "warning: {file}: --set {key}: a {name} study does not read {key} ({why}): its rows are the same for every value",
-                key = o.key,
-                why = entry.why
+            Some(crate::jobs::codes::warning(
+                "study-unread",
+                file,
+                format!(
+                    "--set {key}: a {name} study does not read {key} ({why}): its rows are the same for every value",
+                    key = o.key,
+                    why = entry.why
+                ),
             ))
         })
         .collect()

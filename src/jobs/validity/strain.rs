@@ -48,13 +48,16 @@ pub fn strain_warning(
     (strain, at): (f64, Point),
     under: &str,
 ) -> Option<String> {
-    (strain.is_nan() || strain > STRAIN_LIMIT).then(|| format!(
-        "warning: {}: body \"{name}\" is strained by {:.3e} ({:.0} %) at ({:.4}, {:.4}) under {under}; linear elasticity assumes small strains, so these results are outside its range (they err by about as much). Check the Young's moduli and the loads (units: MPa and mm)",
-        problem.file,
-        strain,
-        100.0 * strain,
-        at[0],
-        at[1],
+    (strain.is_nan() || strain > STRAIN_LIMIT).then(|| crate::jobs::codes::warning(
+        "strain",
+        &problem.file,
+        format!(
+            "body \"{name}\" is strained by {:.3e} ({:.0} %) at ({:.4}, {:.4}) under {under}: outside small strains",
+            strain,
+            100.0 * strain,
+            at[0],
+            at[1],
+        ),
     ))
 }
 

@@ -22,6 +22,9 @@ const FIGURES: &[&str] = &[
     "shape_evolution",
     "dissipation",
     "delta_w",
+    "wear",
+    "temperature",
+    "contact_temperature",
     "sweep",
 ];
 
@@ -55,6 +58,14 @@ const DATA: &[(&str, Signature)] = &[
     (
         "iterations.csv",
         Signature::Header("iteration,i_delta_w_mm3,"),
+    ),
+    (
+        "heat.csv",
+        Signature::Header("x_mm,contact_temperature_body1_C,"),
+    ),
+    (
+        "steady_heat.csv",
+        Signature::Header("x_mm,thermal_gap_plus_mm,"),
     ),
     ("sweep.csv", Signature::SweepCsv),
     (

@@ -56,6 +56,9 @@ pub struct ContactState {
     pub recorded_pressure: Option<Vec<f64>>,
     /// With heat: the modal coordinates of the temperature the state was solved with.
     pub temperature: Option<Vec<f64>>,
+    /// The depth worn off body 1 and off body 2 at each contact point, mm, where a run
+    /// recorded it.
+    pub body_wear: Option<[Vec<f64>; 2]>,
 }
 
 fn io(path: &Path) -> impl Fn(std::io::Error) -> OutputError + '_ {
@@ -134,6 +137,10 @@ pub fn write_contact_states(
         if let Some(p) = &state.recorded_pressure {
             values.push(("pressure_recorded", &p[..]));
         }
+        if let Some([one, two]) = &state.body_wear {
+            values.push(("wear_body1", &one[..]));
+            values.push(("wear_body2", &two[..]));
+        }
         let heat_values = heat.zip(state.temperature.as_ref()).map(|(model, a)| {
             (
                 model.contact_temperature[0].at(a),
@@ -180,6 +187,7 @@ pub fn write_contact_job(dir: &Path, problem: &Problem) -> Result<(), VtkError> 
         shape: contact.points.initial_gap.clone(),
         recorded_pressure: None,
         temperature: None,
+        body_wear: None,
     };
     write_contact_states(dir, problem, &[state], None)
 }
@@ -203,6 +211,7 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &WearRun) -> Result<(), Vtk
         shape: run.contact.points.initial_gap.clone(),
         recorded_pressure: None,
         temperature: heat.map(|m| m.start().a),
+        body_wear: Some([vec![0.0; run.contact.len()], vec![0.0; run.contact.len()]]),
     }];
     let h = &run.history;
     for s in &h.snapshots {
@@ -213,6 +222,7 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &WearRun) -> Result<(), Vtk
             shape: s.shape.clone(),
             recorded_pressure: Some(s.pressure.clone()),
             temperature: s.thermal_state.clone(),
+            body_wear: Some(s.body_wear.clone()),
         });
     }
     if let Some(last) = h.steps.last() {
@@ -230,6 +240,7 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &WearRun) -> Result<(), Vtk
                 shape: h.shape.clone(),
                 recorded_pressure: Some(pressure.clone()),
                 temperature: h.thermal.as_ref().map(|t| t.solved_state.clone()),
+                body_wear: Some(h.body_wear.clone()),
             });
         }
     }
@@ -271,6 +282,7 @@ pub fn write_steady(
                 shape: state.shape.clone(),
                 recorded_pressure: Some(p.clone()),
                 temperature: heat.map(|h| h.modal[k].clone()),
+                body_wear: None,
             }
         })
         .collect();
