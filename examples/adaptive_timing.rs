@@ -6,7 +6,7 @@
 //! over 1.5 ms (factorisations; `TRACE=1` lists them with the k of each run of steps), the
 //! mean of the others, and a checksum of the last pressures and shape.
 
-// The allocator of the `wearfem` binary (src/main.rs), so that the figures are the command's.
+// The allocator of the `wearfem` binary (src/cli/main.rs), so that the figures are the command's.
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

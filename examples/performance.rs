@@ -3,7 +3,7 @@
 //! `cargo bench` (benches/setup.rs, contact.rs, wear.rs); this prints what the benchmarks cannot: problem sizes, solves
 //! and iterations per step.)
 
-// The allocator of the `wearfem` binary (src/main.rs), so that the figures are the command's.
+// The allocator of the `wearfem` binary (src/cli/main.rs), so that the figures are the command's.
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

@@ -8,7 +8,7 @@
 //! compared point by point. Times are wall clock of one run (see docs/performance.md for the
 //! machine); memory is the process's peak resident set so far (it only grows).
 
-// The allocator of the `wearfem` binary (src/main.rs), so that the figures are the command's.
+// The allocator of the `wearfem` binary (src/cli/main.rs), so that the figures are the command's.
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
