@@ -27,9 +27,10 @@ pub mod resolution;
 mod spec;
 pub mod zone;
 use flexibility::add_flexibility;
+pub use mortar::SurfaceMisfit;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
-pub use resolution::{CoarseZone, PointResolution, SizeJump, SurfaceMisfit, UnmatchedLine};
+pub use resolution::{CoarseZone, PointResolution, SizeJump, UnmatchedLine};
 pub use spec::{check_settings, CircleShape, ContactSpec, PlateSpec};
 pub use zone::EdgeEnd;
 

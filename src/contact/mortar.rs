@@ -267,6 +267,23 @@ pub(super) fn mortar_traces(
     })
 }
 
+/// Where body 2's surface departs most, on one of body 1's contact elements, from the
+/// surface its contact points see (the polynomial through their gaps).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceMisfit {
+    /// Where on body 1's edge [x, z], mm.
+    pub x: crate::geometry::Point,
+    /// g₀ there minus the polynomial through the points' gaps, mm: negative where body 2
+    /// rises above what the points see (a ridge), positive where it falls away (a groove).
+    pub misfit: f64,
+    /// The geometric gap g₀ there, mm.
+    pub gap: f64,
+    /// The chord of body 1's element, mm.
+    pub element_length: f64,
+    /// The contact points of body 1's element (first, last).
+    pub points: [usize; 2],
+}
+
 /// Where body 2's surface departs from what the constraints see: on each of body 1's
 /// contact elements the largest |g₀(x) − Σ_b N_b(x) g_b| over the Gauss points of the pieces
 /// between body 2's element ends (so that every feature made of body 2's elements is
@@ -286,7 +303,7 @@ pub(super) fn surface_misfits(
         impl Fn(crate::geometry::Point) -> f64,
         &[crate::geometry::Point],
     ),
-) -> Vec<super::resolution::SurfaceMisfit> {
+) -> Vec<SurfaceMisfit> {
     let p1 = body1.dofs.p;
     let nodes = gauss_lobatto(p1 + 1).points;
     let rule = gauss_legendre(p1.max(body2.dofs.p) + 3);
@@ -297,7 +314,7 @@ pub(super) fn surface_misfits(
         // The worst rise and the worst fall: which one matters depends on where the bodies
         // touch, so neither may hide the other (red team H: a fall beside the zone hid a rise
         // inside it).
-        let none = super::resolution::SurfaceMisfit {
+        let none = SurfaceMisfit {
             x: [0.0, 0.0],
             misfit: 0.0,
             gap: 0.0,

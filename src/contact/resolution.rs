@@ -21,7 +21,7 @@
 //! thresholds are read off the studies of docs/validation.md; `tests/mortar.rs` checks that
 //! the cases whose pressure is more than 1 % off are reported and the resolved ones are not.
 
-use super::mortar::ChainElement;
+use super::mortar::{ChainElement, SurfaceMisfit};
 use super::CondensedContact;
 use crate::elasticity::ElasticBody;
 use crate::geometry::Point;
@@ -339,23 +339,6 @@ pub(super) fn size_jump_in_contact(jumps: &[SizeJump], pressures: &[&[f64]]) -> 
         .iter()
         .find(|j| span_in_contact(j.points, pressures))
         .copied()
-}
-
-/// Where body 2's surface departs most, on one of body 1's contact elements, from the
-/// surface its contact points see (the polynomial through their gaps).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfaceMisfit {
-    /// Where on body 1's edge [x, z], mm.
-    pub x: Point,
-    /// g₀ there minus the polynomial through the points' gaps, mm: negative where body 2
-    /// rises above what the points see (a ridge), positive where it falls away (a groove).
-    pub misfit: f64,
-    /// The geometric gap g₀ there, mm.
-    pub gap: f64,
-    /// The chord of body 1's element, mm.
-    pub element_length: f64,
-    /// The contact points of body 1's element (first, last).
-    pub points: [usize; 2],
 }
 
 /// Share of the peak contact pressure above which a misfit's own pressure scale (see
