@@ -38,7 +38,7 @@ fn shipped_examples_are_inside_the_model() {
         let w = validity::steady_checks(&p, &contact, &state);
         assert!(w.is_empty(), "{name} steady: {w:?}");
         let run = driver::wear(&p, Some(200), |_| {}).unwrap();
-        let w = validity::run_checks(&p, &run);
+        let w = validity::run_checks(&p, &run.contact, &run.history);
         assert!(w.is_empty(), "{name} run: {w:?}");
     }
 }
@@ -167,7 +167,7 @@ shape_zero_at = 0.0
     let warnings = |sets: &[&str]| {
         let p = problem(base, sets);
         let run = driver::wear(&p, None, |_| {}).unwrap();
-        validity::run_checks(&p, &run)
+        validity::run_checks(&p, &run.contact, &run.history)
     };
     assert!(warnings(&[]).is_empty());
     let deep = warnings(&["wear.extrapolation=[{k=1000000}]"]);
@@ -200,7 +200,10 @@ fn worn_depth_is_judged_per_body_against_its_own_blocks() {
     let warnings = |name: &str, sets: &[&str]| {
         let p = from_file(name, sets);
         let run = driver::wear(&p, None, |_| {}).unwrap();
-        (validity::run_checks(&p, &run), run.history.worn_depth)
+        (
+            validity::run_checks(&p, &run.contact, &run.history),
+            run.history.worn_depth,
+        )
     };
     let (pad, depth) = warnings("pad-worn-through.toml", &[]);
     assert!(depth[0] > 1.0 && depth[1] == 0.0, "{depth:?}");
@@ -385,7 +388,7 @@ fn a_half_period_check_that_cannot_be_made_says_so() {
     let (state, contact, _) = driver::steady(&huge).unwrap();
     let steady = validity::steady_checks(&huge, &contact, &state);
     let run = driver::wear(&huge, Some(60), |_| {}).unwrap();
-    let run = validity::run_checks(&huge, &run);
+    let run = validity::run_checks(&huge, &run.contact, &run.history);
     for (job, warnings) in [("steady", steady), ("run", run)] {
         let half_period: Vec<&String> = warnings
             .iter()

@@ -10,6 +10,7 @@ use crate::material::{Analysis, Material};
 use crate::mesh::Mesh;
 pub use crate::schema::*;
 
+mod contact_settings;
 mod gmsh_body;
 mod meshes;
 

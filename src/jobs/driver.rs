@@ -103,50 +103,15 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
     }))
 }
 
-/// The solver method named in the problem's `[contact]` section.
+/// The solver method named in the problem's `[contact]` section
+/// ([`Problem::contact_method`]).
 pub fn method(problem: &Problem) -> Result<Method, ProblemError> {
-    let c = problem
-        .spec
-        .contact
-        .as_ref()
-        .ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
-    match c.method.as_str() {
-        "active_set" => Ok(Method::ActiveSet),
-        "lemke" => Ok(Method::Lemke),
-        "penalty" => match c.penalty {
-            Some(k) if k.is_finite() && k > 0.0 => Ok(Method::Penalty { stiffness: k }),
-            other => Err(problem.error(
-                "contact.penalty",
-                match other {
-                    Some(k) => format!("method \"penalty\" needs penalty > 0 (MPa/mm), got {k}"),
-                    None => {
-                        "method \"penalty\" needs penalty > 0 (MPa/mm), which is missing".into()
-                    }
-                },
-            )),
-        },
-        other => Err(problem.error(
-            "contact.method",
-            format!("must be \"active_set\", \"lemke\" or \"penalty\", got \"{other}\""),
-        )),
-    }
+    problem.contact_method()
 }
 
-/// The first sliding direction named in the problem.
+/// The first sliding direction named in the problem ([`Problem::first_direction`]).
 pub fn direction(problem: &Problem) -> Result<Direction, ProblemError> {
-    let c = problem
-        .spec
-        .contact
-        .as_ref()
-        .ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
-    match c.direction.as_str() {
-        "+" => Ok(Direction::Plus),
-        "-" | "−" => Ok(Direction::Minus),
-        other => Err(problem.error(
-            "contact.direction",
-            format!("must be \"+\" or \"-\", got \"{other}\""),
-        )),
-    }
+    problem.first_direction()
 }
 
 /// Indices of the contact points nearest to the problem's probes on the contact body.

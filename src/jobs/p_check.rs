@@ -122,10 +122,7 @@ fn first_solve_depth_warnings(
     contact: &CondensedContact,
     which: &str,
 ) -> Vec<String> {
-    let (Ok(direction), Ok(method)) = (
-        crate::driver::direction(problem),
-        crate::driver::method(problem),
-    ) else {
+    let (Ok(direction), Ok(method)) = (problem.first_direction(), problem.contact_method()) else {
         return Vec::new();
     };
     let (solution, info) =
@@ -223,8 +220,8 @@ pub fn p_check(problem: &Problem, contact: &CondensedContact) -> Result<Option<P
     let Some(raised) = raised_problem(problem)? else {
         return Ok(None);
     };
-    let direction = crate::driver::direction(problem).map_err(|e| e.to_string())?;
-    let method = crate::driver::method(problem).map_err(|e| e.to_string())?;
+    let direction = problem.first_direction().map_err(|e| e.to_string())?;
+    let method = problem.contact_method().map_err(|e| e.to_string())?;
     let (base, info) =
         ContactSolver::new(contact, method).solve(&contact.points.initial_gap, direction);
     if info.status != Status::Solved {

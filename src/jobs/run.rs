@@ -186,10 +186,17 @@ impl WearRun {
     /// is false.
     pub fn warnings(&self, problem: &Problem) -> &[String] {
         self.warnings.get_or_init(|| {
-            let mut warnings = run_warnings(problem, self);
+            let mut warnings = self.model_warnings(problem);
             warnings.extend(self.resolution_warnings(problem, true));
             warnings
         })
+    }
+
+    /// The warnings about the contact, the model and the heat of this run.
+    fn model_warnings(&self, problem: &Problem) -> Vec<String> {
+        let mut warnings = run_warnings(problem, &self.contact, &self.history);
+        warnings.extend(super::heat::run_warnings(problem, self));
+        warnings
     }
 
     /// The depth warnings, and the check in p of the first contact solve and of the run's
@@ -239,7 +246,7 @@ impl WearRun {
     /// The warnings of a study's run: as [`WearRun::warnings`], but the resolution in p is
     /// checked only where `analysis.p_check` is true (it costs a set-up at p + 2).
     pub fn study_warnings(&self, problem: &Problem) -> Vec<String> {
-        let mut warnings = run_warnings(problem, self);
+        let mut warnings = self.model_warnings(problem);
         warnings.extend(self.resolution_warnings(problem, false));
         warnings
     }

@@ -392,19 +392,18 @@ fn tools(
 ) -> Option<(ContactSolver, WearIntegrator, Direction)> {
     let spec = problem.spec.wear.as_ref()?;
     let mut integrator = WearIntegrator::new(spec).ok()?;
-    let direction = crate::driver::direction(problem).ok()?;
+    let direction = problem.first_direction().ok()?;
     integrator.first_direction = direction;
-    let solver = ContactSolver::new(contact, crate::driver::method(problem).ok()?);
+    let solver = ContactSolver::new(contact, problem.contact_method().ok()?);
     Some((solver, integrator, direction))
 }
 
 /// The checks of this module for a finished `wearfem run`: its last cycle's pressures over a
 /// half period, its worn depth and the first solve's displacements.
-pub fn run_checks(problem: &Problem, run: &crate::driver::WearRun) -> Vec<String> {
-    let Some((mut solver, integrator, first)) = tools(problem, &run.contact) else {
+pub fn run_checks(problem: &Problem, contact: &CondensedContact, h: &WearHistory) -> Vec<String> {
+    let Some((mut solver, integrator, first)) = tools(problem, contact) else {
         return Vec::new();
     };
-    let h = &run.history;
     let mut warnings = Vec::new();
     if h.steady_distance.is_some() {
         // p_plus is the '+' pressure, p_minus the '−' one, whichever came first; under
@@ -421,12 +420,7 @@ pub fn run_checks(problem: &Problem, run: &crate::driver::WearRun) -> Vec<String
         warnings.extend(half_period_warning(problem, change));
     }
     warnings.extend(wear_depth_warnings(problem, h));
-    warnings.extend(displacement_warning(
-        problem,
-        &run.contact,
-        &mut solver,
-        first,
-    ));
+    warnings.extend(displacement_warning(problem, contact, &mut solver, first));
     warnings
 }
 

@@ -505,28 +505,24 @@ pub fn penalty_warning(problem: &Problem, contact: &CondensedContact) -> Option<
     })
 }
 
-/// Every warning about a finished run, in the order the console prints them: a soft penalty,
-/// what the model leaves out, the model's own assumptions ([`super::validity`]) and the
-/// contact zones of the last cycle. summary.json lists them as `warnings`.
-pub fn run_warnings(problem: &Problem, run: &super::driver::WearRun) -> Vec<String> {
-    let h = &run.history;
-    let mut warnings: Vec<String> = penalty_warning(problem, &run.contact).into_iter().collect();
-    warnings.extend(model_warnings(
-        problem,
-        &run.contact,
-        &[&h.p_plus, &h.p_minus],
-    ));
-    warnings.extend(super::validity::run_checks(problem, run));
-    warnings.extend(zone_warnings(
-        problem,
-        &run.contact,
-        &[&h.p_plus, &h.p_minus],
-    ));
-    warnings.extend(super::heat::run_warnings(problem, run));
+/// The warnings about a finished run's contact and model, in the order the console prints
+/// them: a soft penalty, what the model leaves out, the model's own assumptions
+/// ([`super::validity`]) and the contact zones of the last cycle (`history`'s). The run job
+/// adds the heat's.
+pub fn run_warnings(
+    problem: &Problem,
+    contact: &CondensedContact,
+    history: &crate::wear::WearHistory,
+) -> Vec<String> {
+    let h = history;
+    let mut warnings: Vec<String> = penalty_warning(problem, contact).into_iter().collect();
+    warnings.extend(model_warnings(problem, contact, &[&h.p_plus, &h.p_minus]));
+    warnings.extend(super::validity::run_checks(problem, contact, h));
+    warnings.extend(zone_warnings(problem, contact, &[&h.p_plus, &h.p_minus]));
     warnings
 }
 
-/// Every warning about a steady state (see [`run_warnings`]), with the check of the
+/// Every warning about a steady state (as [`run_warnings`]), with the check of the
 /// resolution in p ([`crate::p_check`]) unless `analysis.p_check` is false.
 pub fn steady_warnings(
     problem: &Problem,

@@ -36,8 +36,8 @@ pub fn p_check_run(
             last: None,
         });
     };
-    let direction = crate::driver::direction(problem).map_err(|e| e.to_string())?;
-    let method = crate::driver::method(problem).map_err(|e| e.to_string())?;
+    let direction = problem.first_direction().map_err(|e| e.to_string())?;
+    let method = problem.contact_method().map_err(|e| e.to_string())?;
     let (raised_contact, _, _) =
         CondensedContact::build(&raised).map_err(|e| format!("the set-up at p + 2: {e}"))?;
     let degrees = super::degrees(problem, &raised);
