@@ -71,6 +71,7 @@
 /// can be traced to the source that computed them.
 pub const VERSION: &str = env!("WEARFEM_VERSION");
 
+pub mod checks;
 pub mod contact;
 pub mod fe;
 pub mod input;
@@ -82,11 +83,12 @@ pub mod wear;
 
 // Every stage's modules stay reachable at the crate root (`wearfem::basis`, …), as before the
 // folders grouped them.
+pub use checks::{codes, p_check, steady_check, validity, warnings};
 pub use fe::{
     basis, conduction, dofs, elasticity, fields, geometry, loads, material, mesh, quadrature,
 };
 pub use input::{examples, gmsh, heat as heat_input, overrides, problem, schema, wear_units};
-pub use jobs::{codes, driver, p_check, steady_check, sweep, validate, validity};
+pub use jobs::{driver, sweep, validate};
 pub use report::{deformation, output, plot, vtk};
 pub use solver::{capacitance, complementarity, dense, lemke, updated_lu};
 pub use steady_state::{

@@ -891,7 +891,7 @@ fn a_lower_degree_on_body_2_is_reported_like_a_coarser_mesh() {
         zones.iter().all(|z| z.partner_degree_ratio == 8.0),
         "{zones:?}"
     );
-    let lines = wearfem::jobs::warnings::zone_warnings(&low, &contact, &[&sol.pressure]);
+    let lines = wearfem::warnings::zone_warnings(&low, &contact, &[&sol.pressure]);
     assert!(
         lines
             .iter()
@@ -988,7 +988,7 @@ fn a_ridge_between_contact_points_is_reported() {
     let m = contact
         .surface_misfit_in_contact(
             &[&sol.pressure],
-            wearfem::jobs::warnings::contact_modulus(&unresolved).unwrap(),
+            wearfem::warnings::contact_modulus(&unresolved).unwrap(),
         )
         .expect("a misfit in contact");
     // 1e-9 mm: round-off of the gaps (1e-3 mm) and of locating the ridge's top.

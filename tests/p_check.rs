@@ -1,4 +1,4 @@
-//! The check of the resolution in p (src/jobs/p_check.rs): a mesh too coarse for the contact
+//! The check of the resolution in p (src/checks/p_check.rs): a mesh too coarse for the contact
 //! that refining the contact edge cannot show is found by raising p.
 
 use wearfem::driver;

@@ -1,4 +1,4 @@
-//! The checks of the model's own assumptions (src/jobs/validity.rs): results whose equations
+//! The checks of the model's own assumptions (src/checks/validity.rs): results whose equations
 //! were solved exactly but which the equations no longer describe are reported.
 
 use wearfem::complementarity::{ContactSolver, Direction};

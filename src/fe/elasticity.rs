@@ -61,7 +61,7 @@ pub struct Discretisation {
 }
 
 /// The supports of a body: held dofs (at zero or at a prescribed displacement) and elastic
-/// supports ([`supports`]).
+/// supports (module `supports`: springs and prescribed displacements).
 #[derive(Clone, Debug, Default)]
 pub struct Constraints {
     /// Global dofs held (at zero unless `prescribed` gives a value).

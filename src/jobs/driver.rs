@@ -13,7 +13,7 @@ use serde_json::{json, Value};
 use std::time::Instant;
 
 pub use super::run::{wear, wear_until, WearRun};
-pub use super::warnings::{
+pub use crate::checks::warnings::{
     coarse_zones_json, edge_ends_json, edge_ends_warning, fixed_plate_load_warning, model_warnings,
     penalty_warning, run_warnings, steady_edge_ends, steady_warnings, study_steady_warnings,
     target_mesh_json, target_mesh_note, zone_warnings, STROKE_LIMIT,
@@ -46,8 +46,8 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
             .map_err(|e| problem.error("bodies", e.to_string()))?;
         // ½ uᵀKu with the supports' springs: ½ fᵀu counts no work of prescribed displacements.
         energy += body.stored_energy(&u);
-        let strain = super::validity::largest_strain(&body, &u);
-        warnings.extend(super::validity::strain_warning(
+        let strain = crate::checks::validity::largest_strain(&body, &u);
+        warnings.extend(crate::checks::validity::strain_warning(
             problem,
             &body.name,
             strain,
@@ -73,7 +73,7 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
             if materials.len() > 1 {
                 let names: Vec<&str> = problem.spec.materials.keys().map(String::as_str).collect();
                 let name_of = |m: usize| names.get(m).copied().unwrap_or("?");
-                warnings.push(crate::jobs::codes::warning(
+                warnings.push(crate::checks::codes::warning(
                     "probe-interface",
                     &problem.file,
                     format!(
@@ -274,14 +274,16 @@ pub fn contact(
     // solution, so a failed solve gets none.
     let mut warnings: Vec<String> = penalty_warning(problem, &contact).into_iter().collect();
     warnings.extend(fixed_plate_load_warning(problem, &contact));
-    warnings.extend(super::warnings::inclined_contact_warning(problem, &contact));
+    warnings.extend(crate::checks::warnings::inclined_contact_warning(
+        problem, &contact,
+    ));
     if info.status == Status::Solved {
-        warnings.extend(super::validity::plate_motion_warning(
+        warnings.extend(crate::checks::validity::plate_motion_warning(
             problem,
             &contact,
             &solution.rigid,
         ));
-        warnings.extend(super::validity::contact_strain_warnings(
+        warnings.extend(crate::checks::validity::contact_strain_warnings(
             problem, &contact, &solution, first,
         ));
         warnings.extend(zone_warnings(problem, &contact, &[&solution.pressure]));
@@ -525,7 +527,7 @@ pub fn steady_by(
                 .ok_or(())
         }) {
             outcome.distance_from_exact =
-                super::steady_check::pressure_distance(&outcome.state, exact);
+                crate::checks::steady_check::pressure_distance(&outcome.state, exact);
         }
         // A result that fails the acceptance rule is not a steady state: its status says so,
         // and callers write none of its values.

@@ -2,8 +2,8 @@
 //! contact bodies and the contact, handed to the wear stage's thermal model
 //! ([`crate::wear::thermal`]).
 
-use super::codes::warning;
 use super::driver::JobError;
+use crate::checks::codes::warning;
 use crate::contact::CondensedContact;
 use crate::elasticity::ElasticBody;
 use crate::jobs::json::{number, numbers};

@@ -38,7 +38,7 @@ pub struct WearRun {
     /// (`wear.step_time` each) then.
     pub monotonic: bool,
     /// The last cycle against the steady state of the same problem (not in `run_seconds`).
-    pub steady_check: super::steady_check::SteadyCheck,
+    pub steady_check: crate::checks::steady_check::SteadyCheck,
     /// `wear.shape_zero_at` (mm): the reported wear is relative to the wear there.
     pub shape_zero_at: Option<f64>,
     /// The run's warnings ([`run_warnings`]), made on first use by [`WearRun::warnings`].
@@ -144,7 +144,7 @@ pub fn wear_until(
         records_past_end.sort_unstable();
         records_past_end.dedup();
     }
-    let steady_check = super::steady_check::check(&contact, &integrator, &history);
+    let steady_check = crate::checks::steady_check::check(&contact, &integrator, &history);
     let body_names = problem
         .spec
         .contact
@@ -373,7 +373,7 @@ impl WearRun {
         }
         match &h.steady_distance {
             Some(d) => {
-                use super::steady_check::SteadyCheck;
+                use crate::checks::steady_check::SteadyCheck;
                 let (pressure, check) = match &self.steady_check {
                     SteadyCheck::Compared { pressure, .. } => {
                         (number(*pressure), json!("compared"))

@@ -368,9 +368,9 @@ pub fn solve(problem: &Problem, job: Job) -> Result<Outcome, JobError> {
                     rigid_wear_per_period: None,
                     steady: Some((
                         match run.steady_check {
-                            super::steady_check::SteadyCheck::Compared { pressure, .. } => {
-                                Some(pressure)
-                            }
+                            crate::checks::steady_check::SteadyCheck::Compared {
+                                pressure, ..
+                            } => Some(pressure),
                             _ => None,
                         },
                         run.steady_check.reached(h),

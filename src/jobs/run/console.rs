@@ -7,7 +7,7 @@
 //! with the steady state ([`SteadyCheck::Growing`]).
 
 use super::WearRun;
-use crate::jobs::steady_check::SteadyCheck;
+use crate::checks::steady_check::SteadyCheck;
 use crate::problem::Problem;
 
 impl WearRun {

@@ -225,7 +225,7 @@ pub fn warnings(file: &str, job: Job, variants: &[Variant]) -> Vec<String> {
                 return None;
             }
             let entry = unread(&o.key, job, variants.iter().map(|v| &v.problem))?;
-            Some(crate::jobs::codes::warning(
+            Some(crate::checks::codes::warning(
                 "study-unread",
                 file,
                 format!(

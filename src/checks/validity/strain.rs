@@ -48,7 +48,7 @@ pub fn strain_warning(
     (strain, at): (f64, Point),
     under: &str,
 ) -> Option<String> {
-    (strain.is_nan() || strain > STRAIN_LIMIT).then(|| crate::jobs::codes::warning(
+    (strain.is_nan() || strain > STRAIN_LIMIT).then(|| crate::checks::codes::warning(
         "strain",
         &problem.file,
         format!(
