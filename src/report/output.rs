@@ -194,14 +194,39 @@ pub fn contact_window(p_plus: &[f64], p_minus: Option<&[f64]>) -> Option<std::op
 }
 
 /// Write everything a wear run produces into `dir`: summary.json, history.csv, final.csv,
-/// snapshots.csv and the plots pressure.svg, shape.svg, history.svg.
+/// snapshots.csv and the figures.
+///
+/// The summary holds the run's warnings, whose checks (the check in p sets the problem up
+/// again at p + 2) take about as long as drawing the figures: the two are made side by side,
+/// and the figures of the run's history beside those of its last cycle.
 pub fn write_wear(
     dir: &Path,
     problem: &crate::problem::Problem,
     run: &crate::driver::WearRun,
 ) -> Result<(), OutputError> {
+    let (summary, (tables, figures)) = rayon::join(
+        || write_json(dir, "summary.json", &run.summary(problem)),
+        || {
+            rayon::join(
+                || write_wear_tables(dir, problem, run),
+                || {
+                    let name = crate::plot::problem_name(&problem.file);
+                    write_heat(dir, &name, run)?;
+                    crate::plot::wear_figures(dir, &name, run).map_err(plot_error(dir))
+                },
+            )
+        },
+    );
+    summary.and(tables).and(figures)
+}
+
+/// history.csv, final.csv, snapshots.csv and the figures of the last cycle and the probes.
+fn write_wear_tables(
+    dir: &Path,
+    problem: &crate::problem::Problem,
+    run: &crate::driver::WearRun,
+) -> Result<(), OutputError> {
     use crate::plot::{line_plot, Series};
-    write_json(dir, "summary.json", &run.summary(problem))?;
     let h = &run.history;
     let mut header: Vec<String> = [
         "step",
@@ -333,9 +358,7 @@ pub fn write_wear(
         "pressure (MPa)",
         &series,
     )
-    .map_err(plot_error(&path))?;
-    write_heat(dir, &name, run)?;
-    crate::plot::wear_figures(dir, &name, run).map_err(plot_error(dir))
+    .map_err(plot_error(&path))
 }
 
 /// The summary JSON of a steady state (what `wearfem steady` writes as summary.json):
