@@ -2,7 +2,6 @@
 
 pub mod driver;
 pub mod heat;
-pub mod json;
 mod run;
 pub mod sweep;
 pub mod validate;

@@ -4,8 +4,8 @@
 
 use super::codes::warning;
 use crate::contact::CondensedContact;
-use crate::jobs::json::{number, numbers};
 use crate::problem::Problem;
+use crate::report::json::{number, numbers};
 use serde_json::{json, Value};
 
 fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {

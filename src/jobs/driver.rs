@@ -6,8 +6,8 @@ use crate::complementarity::{
     ContactSolution, ContactSolver, Direction, Method, SolveInfo, Status,
 };
 use crate::contact::CondensedContact;
-use crate::jobs::json::{number, numbers};
 use crate::problem::{Problem, ProblemError};
+use crate::report::json::{number, numbers};
 use crate::wear::WearIntegrator;
 use serde_json::{json, Value};
 use std::time::Instant;
@@ -242,7 +242,7 @@ pub fn contact(
     let mut solver = ContactSolver::new(&contact, method(problem)?);
     let first = direction(problem)?;
     let (solution, info) = solver.solve(&contact.points.initial_gap, first);
-    let rigid = crate::jobs::json::named(&contact.rigid_names, &solution.rigid);
+    let rigid = crate::report::json::named(&contact.rigid_names, &solution.rigid);
     let probes: serde_json::Map<String, Value> = contact_probes(problem, &contact)
         .into_iter()
         .map(|(n, i)| (n, number(solution.pressure[i])))

@@ -6,8 +6,8 @@ use super::driver::JobError;
 use crate::checks::codes::warning;
 use crate::contact::CondensedContact;
 use crate::elasticity::ElasticBody;
-use crate::jobs::json::{number, numbers};
 use crate::problem::Problem;
+use crate::report::json::{number, numbers};
 use crate::wear::thermal::{Sliding, ThermalBodies, ThermalHistory, ThermalInfo, ThermalModel};
 use serde_json::{json, Value};
 

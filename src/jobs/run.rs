@@ -7,8 +7,8 @@ use super::driver::{
 };
 use crate::complementarity::ContactSolver;
 use crate::contact::CondensedContact;
-use crate::jobs::json::{number, numbers};
 use crate::problem::Problem;
+use crate::report::json::{number, numbers};
 use crate::wear::{WearHistory, WearIntegrator};
 use serde_json::{json, Value};
 use std::ops::ControlFlow;

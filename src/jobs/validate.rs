@@ -176,7 +176,7 @@ impl Report {
     /// The table as JSON: `checks` (id, quantity, unit, reference, source, ours, difference,
     /// bound {kind, value}, passed), `passed`, `quick`, `seconds`.
     pub fn json(&self) -> Value {
-        let number = crate::jobs::json::number;
+        let number = crate::report::json::number;
         let checks: Vec<Value> = self
             .checks
             .iter()

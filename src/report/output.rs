@@ -57,7 +57,7 @@ pub fn write_csv(
     file.write_all(text.as_bytes()).map_err(io(&path))
 }
 
-pub use crate::jobs::json::{named, number, numbers};
+pub use crate::report::json::{named, number, numbers};
 
 mod heat;
 mod stale;

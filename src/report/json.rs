@@ -1,4 +1,4 @@
-//! Numbers as JSON values for the summaries the jobs build: non-finite values become null
+//! Numbers as JSON values for the summaries the jobs and checks build: non-finite values become null
 //! (never NaN in a file), and named lists become objects.
 
 use serde_json::{json, Value};
