@@ -12,6 +12,7 @@ use std::time::Instant;
 
 mod cases;
 mod heat_cases;
+mod part_cases;
 mod wear_cases;
 
 /// How a check's difference is measured and bounded.
@@ -261,6 +262,8 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     heat_cases::conduction(&mut checks)?;
     heat_cases::thermal_strain(&mut checks)?;
     heat_cases::punch(&mut checks)?;
+    part_cases::supports(&mut checks)?;
+    part_cases::body_volumes(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks
             .iter_mut()
