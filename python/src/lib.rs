@@ -351,7 +351,7 @@ impl PyProblem {
         let mut stopped_by: Option<PyErr> = None;
         let mut last_check = Instant::now();
         let out = py.allow_threads(|| {
-            driver::wear_until(p, steps, |s| {
+            driver::wear_checked(p, steps, |s| {
                 if progress.is_none() && last_check.elapsed() < SIGNAL_INTERVAL {
                     return ControlFlow::Continue(());
                 }

@@ -214,16 +214,30 @@ pub fn zone_of(x: &[[f64; 2]], pressure: &[f64]) -> Option<[f64; 2]> {
 /// degree is already 20, the solve at `problem`'s own degrees fails (its job reports that),
 /// or no contact point lies inside the zone. `Err` says why the raised solve could not be made.
 pub fn p_check(problem: &Problem, contact: &CondensedContact) -> Result<Option<PCheck>, String> {
+    p_check_with(problem, contact, raised_first_solve(problem))
+}
+
+/// The first contact solve at the raised degrees: what [`p_check`] compares with. It needs
+/// only the problem, so a job can make it beside its own work (`wearfem run` makes it during
+/// the integration).
+#[derive(Debug)]
+pub struct RaisedSolve {
+    /// Each body's name, degree, and raised degree.
+    degrees: Vec<(String, usize, usize)>,
+    /// The raised problem's contact points, mm.
+    x: Vec<[f64; 2]>,
+    /// The pressure there, MPa.
+    pressure: Vec<f64>,
+}
+
+/// Set up `problem` at the raised degrees and solve its first contact; `Ok(None)` when every
+/// degree is already 20; `Err` says why it could not be made.
+pub fn raised_first_solve(problem: &Problem) -> Result<Option<RaisedSolve>, String> {
     let Some(raised) = raised_problem(problem)? else {
         return Ok(None);
     };
     let direction = problem.first_direction().map_err(|e| e.to_string())?;
     let method = problem.contact_method().map_err(|e| e.to_string())?;
-    let (base, info) =
-        ContactSolver::new(contact, method).solve(&contact.points.initial_gap, direction);
-    if info.status != Status::Solved {
-        return Ok(None);
-    }
     let (raised_contact, _, _) =
         CondensedContact::build(&raised).map_err(|e| format!("the set-up at p + 2: {e}"))?;
     let (fine, info) = ContactSolver::new(&raised_contact, method)
@@ -234,17 +248,39 @@ pub fn p_check(problem: &Problem, contact: &CondensedContact) -> Result<Option<P
             info.complementarity
         ));
     }
-    let fine_at = |x: [f64; 2]| on_polyline(&raised_contact.points.x, &fine.pressure, x);
+    Ok(Some(RaisedSolve {
+        degrees: degrees(problem, &raised),
+        x: raised_contact.points.x,
+        pressure: fine.pressure,
+    }))
+}
+
+/// [`p_check`] with the raised solve made already (`raised`).
+pub fn p_check_with(
+    problem: &Problem,
+    contact: &CondensedContact,
+    raised: Result<Option<RaisedSolve>, String>,
+) -> Result<Option<PCheck>, String> {
+    let Some(raised) = raised? else {
+        return Ok(None);
+    };
+    let direction = problem.first_direction().map_err(|e| e.to_string())?;
+    let method = problem.contact_method().map_err(|e| e.to_string())?;
+    let (base, info) =
+        ContactSolver::new(contact, method).solve(&contact.points.initial_gap, direction);
+    if info.status != Status::Solved {
+        return Ok(None);
+    }
+    let fine_at = |x: [f64; 2]| on_polyline(&raised.x, &raised.pressure, x);
     let change = inner_change(
         &contact.points.x,
         &contact.points.weight,
         &base.pressure,
         fine_at,
     );
-    let degrees = degrees(problem, &raised);
     let zone = zone_of(&contact.points.x, &base.pressure);
     Ok(change.zip(zone).map(|(change, zone)| PCheck {
-        degrees,
+        degrees: raised.degrees,
         change,
         zone,
     }))

@@ -354,7 +354,10 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let name = problem.unwrap_or_else(|| "punch-b40".to_string());
             let p = load(&name, &set)?;
             let bar = progress::StepBar::new(&p, steps, quiet);
-            let result = driver::wear(&p, steps, |s| bar.step(s));
+            let result = driver::wear_checked(&p, steps, |s| {
+                bar.step(s);
+                std::ops::ControlFlow::Continue(())
+            });
             bar.finish();
             let result = result?;
             wearfem::output::write_wear(&out, &p, &result)?;

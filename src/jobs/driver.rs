@@ -12,7 +12,7 @@ use crate::wear::WearIntegrator;
 use serde_json::{json, Value};
 use std::time::Instant;
 
-pub use super::run::{wear, wear_until, WearRun};
+pub use super::run::{wear, wear_checked, wear_until, WearRun};
 pub use crate::checks::warnings::{
     coarse_zones_json, edge_ends_json, edge_ends_warning, fixed_plate_load_warning, model_warnings,
     penalty_warning, run_warnings, steady_edge_ends, steady_warnings, study_steady_warnings,
