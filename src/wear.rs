@@ -119,6 +119,24 @@ pub struct WearSpec {
     pub record_cycles: Vec<f64>,
 }
 
+/// Whether `schedule` is a valid extrapolation schedule: every k in 1 … [`MAX_FACTOR`], and
+/// `until` at least 1 and rising, only the last entry open. The message says what is wrong.
+pub fn check_schedule(schedule: &[ScheduleEntry]) -> Result<(), String> {
+    if schedule.is_empty() || schedule.iter().any(|e| !(1..=MAX_FACTOR).contains(&e.k)) {
+        return Err(format!("needs entries with 1 ≤ k ≤ {MAX_FACTOR}"));
+    }
+    let bounds: Vec<usize> = schedule.iter().filter_map(|e| e.until).collect();
+    if bounds.first() == Some(&0)
+        || bounds.windows(2).any(|w| w[1] <= w[0])
+        || schedule[..schedule.len() - 1]
+            .iter()
+            .any(|e| e.until.is_none())
+    {
+        return Err("`until` (the last step of an entry) must be at least 1 and rise from entry to entry; only the last entry may omit it".into());
+    }
+    Ok(())
+}
+
 fn implicit() -> String {
     "implicit".into()
 }
@@ -464,24 +482,7 @@ impl WearIntegrator {
                 .map_err(|(k, m)| (format!("wear.adaptive.{k}"), m))?;
         }
         let schedule = spec.extrapolation.clone().unwrap_or_else(paper_schedule);
-        if schedule.is_empty() || schedule.iter().any(|e| !(1..=MAX_FACTOR).contains(&e.k)) {
-            return bad(
-                "extrapolation",
-                format!("needs entries with 1 ≤ k ≤ {MAX_FACTOR}"),
-            );
-        }
-        let bounds: Vec<usize> = schedule.iter().filter_map(|e| e.until).collect();
-        if bounds.first() == Some(&0)
-            || bounds.windows(2).any(|w| w[1] <= w[0])
-            || schedule[..schedule.len() - 1]
-                .iter()
-                .any(|e| e.until.is_none())
-        {
-            return bad(
-                "extrapolation",
-                "`until` (the last step of an entry) must be at least 1 and rise from entry to entry; only the last entry may omit it".into(),
-            );
-        }
+        check_schedule(&schedule).map_err(|m| ("wear.extrapolation".to_string(), m))?;
         if spec.shape_zero_at.is_some_and(|x| !x.is_finite()) {
             return bad("shape_zero_at", "must be a finite x coordinate (mm)".into());
         }

@@ -127,3 +127,54 @@ fn record_points_that_cannot_be_met_are_refused_by_key() {
     );
     refuse("distance = 1.0\ntime = 3.0", "wear.steps");
 }
+
+#[test]
+fn a_review_s_cases_land_or_are_refused_by_the_right_key() {
+    let text = |keys: &str| {
+        wearfem::examples::example("punch-b40")
+            .unwrap()
+            .replace("steps = 1700 ", "# steps")
+            .replace(RECORD, keys)
+    };
+    // 151.5 cycles recorded in a run of 152 (303 then 304 half periods), also with k = 10.
+    for keys in [
+        "cycles = 152\nrecord_cycles = [151.5]",
+        "extrapolation = [{ k = 10 }]\ncycles = 3\nrecord_cycles = [2.5]",
+    ] {
+        let problem = Problem::from_toml(&text(keys), "odd record").unwrap();
+        let (snapshots, _) = recorded(&problem);
+        assert_eq!(snapshots.len(), 1, "{keys}");
+        assert_eq!(
+            snapshots[0].0 % 2,
+            1,
+            "{keys}: an odd number of half periods"
+        );
+    }
+    // A schedule that is wrong as given is refused as such, though a cut would hide it.
+    let refused = |keys: &str| {
+        let problem = Problem::from_toml(&text(keys), "bad").unwrap();
+        match driver::wear(&problem, None, |_| {}) {
+            Err(driver::JobError::Problem(e)) => e.key,
+            Err(other) => panic!("{other}"),
+            Ok(_) => panic!("{keys}: accepted"),
+        }
+    };
+    assert_eq!(
+        refused("steps = 20\nextrapolation = [{ until = 10, k = 3 }, { until = 4, k = 1 }, { k = 2 }]\nrecord_cycles = [2.5]"),
+        "wear.extrapolation"
+    );
+    assert_eq!(
+        refused("steps = 100000000000000\nrecord_cycles = [1.0]"),
+        "wear.steps"
+    );
+}
+
+#[test]
+fn steps_past_a_cut_end_follow_the_schedule_as_given() {
+    // 166.5 cycles (333 half periods) cut the paper's schedule at steps 103 (k = 7) and 104
+    // (k = 6); `--steps 108` goes on with the paper's k = 10, not the cut's 6.
+    let problem = punch_b40("cycles = 166.5");
+    let run = driver::wear(&problem, Some(108), |_| {}).unwrap();
+    let k: Vec<usize> = run.history.steps[104..].iter().map(|s| s.k).collect();
+    assert_eq!(k, [10, 10, 10, 10]);
+}

@@ -104,7 +104,9 @@ pub fn record_points(spec: &WearSpec) -> Result<Vec<(u64, String)>, KeyError> {
 
 /// The half periods the first `steps` steps of `schedule` stand for.
 pub fn half_periods_of(steps: usize, schedule: &[ScheduleEntry]) -> u64 {
-    (1..=steps).map(|n| factor(schedule, n).max(1) as u64).sum()
+    (1..=steps).fold(0u64, |sum, n| {
+        sum.saturating_add(factor(schedule, n).max(1) as u64)
+    })
 }
 
 /// The steps whose factors pass through every one of `targets` (half periods, rising) and end
@@ -124,11 +126,16 @@ pub fn steps_through(
     let mut factors: Vec<u64> = Vec::new();
     let mut ends = Vec::with_capacity(targets.len());
     let mut cut = false;
-    for &target in targets {
+    for (i, &target) in targets.iter().enumerate() {
+        // An odd target before another ends on a '+' step of one half period, so that the
+        // next segment starts with the '−' step whose half period the odd count leaves due
+        // (ending it on '−' left the next '+' step with nothing to do).
+        let odd_between = alternating && target % 2 == 1 && i + 1 < targets.len();
+        let segment_end = if odd_between { target - 1 } else { target };
         let goal = if alternating {
-            [target.div_ceil(2), target / 2]
+            [segment_end.div_ceil(2), segment_end / 2]
         } else {
-            [target, 0]
+            [segment_end, 0]
         };
         let mut due = [
             goal[0] - done[0].min(goal[0]),
@@ -159,6 +166,16 @@ pub fn steps_through(
             due[own] -= k;
             done[own] += k;
             factors.push(k);
+        }
+        if odd_between {
+            if factors.len() % 2 == 1 {
+                return Err(format!(
+                    "the extrapolation schedule changes k after an odd step, so its steps cannot land on {target} half periods in both directions; change k only after even steps"
+                ));
+            }
+            cut = true;
+            done[0] += 1;
+            factors.push(1);
         }
         ends.push(factors.len());
     }
@@ -228,6 +245,24 @@ mod tests {
             }
         }
         assert_eq!((plus, minus), (500, 500));
+    }
+
+    #[test]
+    fn an_odd_target_before_the_next_half_period_ends_on_a_plus_step() {
+        // 303 then 304 half periods (a review found the second refused): the odd one ends
+        // with a '+' step of 1, and the '−' half period left is the next step.
+        for schedule in [paper_schedule(), vec![ScheduleEntry { until: None, k: 10 }]] {
+            let Through {
+                schedule: cut,
+                ends,
+                ..
+            } = steps_through(&[303, 304], &schedule, true)
+                .unwrap()
+                .unwrap();
+            assert_eq!(half_periods_of(ends[0], &cut), 303);
+            assert_eq!(half_periods_of(ends[1], &cut), 304);
+            assert_eq!(ends[0] % 2, 1, "the odd target ends on a '+' step");
+        }
     }
 
     #[test]

@@ -427,6 +427,16 @@ fn read_elements(cursor: &mut Cursor, mesh: &mut GmshMesh) -> Result<(), GmshErr
             let tag = cursor.size()?;
             return Err(GmshError::UnknownType { tag, kind });
         };
+        let kind_dim = match kind {
+            15 => 0,
+            1 | 8 => 1,
+            _ => 2,
+        };
+        if kind_dim != dim {
+            return Err(cursor.malformed(format!(
+                "elements of Gmsh type {kind} (dimension {kind_dim}) in a block of entity dimension {dim}"
+            )));
+        }
         for _ in 0..n {
             let tag = cursor.size()?;
             let nodes = (0..per)
@@ -475,6 +485,12 @@ mod tests {
         let cut = &SQUARE[..SQUARE.find("$EndNodes").unwrap() - 4];
         assert!(matches!(
             parse(cut.as_bytes()),
+            Err(GmshError::Malformed { .. })
+        ));
+        // A point element in a curve's block (a review's hand-made file panicked later on).
+        let point_in_curve = SQUARE.replace("1 1 1 1\n1 1 2", "1 1 15 1\n1 1");
+        assert!(matches!(
+            parse(point_in_curve.as_bytes()),
             Err(GmshError::Malformed { .. })
         ));
         let triangle_line = SQUARE.replace("1 1 1 1\n1 1 2", "1 1 99 1\n1 1 2");

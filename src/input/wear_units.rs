@@ -152,6 +152,15 @@ pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
         ));
     }
     let schedule = spec.extrapolation.clone().unwrap_or_else(paper_schedule);
+    // The schedule as given is checked before it is cut: a cut one is rebuilt from its steps'
+    // factors and would hide what was wrong with it.
+    crate::wear::check_schedule(&schedule).map_err(|m| ("wear.extrapolation".to_string(), m))?;
+    if spec.steps > MAX_STEPS {
+        return bad(
+            "steps",
+            format!("must be 1 … {MAX_STEPS}, got {}", spec.steps),
+        );
+    }
     let (key, end) = if spec.steps > 0 {
         ("steps", half_periods_of(spec.steps, &schedule) as f64)
     } else {

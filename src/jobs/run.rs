@@ -105,9 +105,29 @@ pub fn wear_until(
         .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
     // The file's duration and record points as steps, so that `steps` cuts the run the file
     // describes (its record points in metres, seconds or cycles included).
+    let given_schedule = spec
+        .extrapolation
+        .clone()
+        .unwrap_or_else(crate::kinematics::paper_schedule);
     let mut spec = crate::wear_units::resolve_duration(&spec)
         .map_err(|(key, message)| problem.error(key, message))?;
     let mut records_past_end = Vec::new();
+    if steps.is_some_and(|n| n > spec.steps) && spec.adaptive.is_none() {
+        // Past the end the file's duration was cut to, the steps follow the schedule as
+        // given, not the cut's last factor (a remainder of 1 would make every further step
+        // one half period).
+        let end = spec.steps;
+        if let Some(cut) = spec.extrapolation.as_mut() {
+            if let Some(last) = cut.last_mut() {
+                last.until = Some(end);
+            }
+            cut.extend(
+                given_schedule
+                    .into_iter()
+                    .filter(|e| e.until.is_none_or(|u| u > end)),
+            );
+        }
+    }
     if let Some(n) = steps {
         // `steps` replaces the file's duration; the snapshots it asks for past the new end are
         // reported in the result (`WearRun::records_past_end`), not dropped in silence.

@@ -225,6 +225,8 @@ impl Problem {
         mesh: &mut GmshMesh,
     ) -> Result<HashMap<(usize, usize), Point>, ProblemError> {
         let mut snapped = HashMap::new();
+        // Each node's circle: a node on two arcs of different centres cannot lie on both.
+        let mut circle_of: HashMap<usize, (Point, usize)> = HashMap::new();
         for (k, arc) in spec.arcs.iter().enumerate() {
             let field = format!("bodies[{b}].gmsh.arcs[{k}]");
             let Some(&group) = mesh.groups(1).get(arc.edge.as_str()) else {
@@ -263,6 +265,22 @@ impl Problem {
                         arc.edge, c[0], c[1]
                     ),
                 ));
+            }
+            for &n in &nodes {
+                match circle_of.get(&n) {
+                    Some(&(other, j)) if other != arc.center => {
+                        return Err(self.error(
+                            format!("{field}.center"),
+                            format!(
+                                "node {n} lies on \"{}\" and on \"{}\" (arcs[{j}]), whose centres differ: it cannot lie on both circles",
+                                arc.edge, spec.arcs[j].edge
+                            ),
+                        ))
+                    }
+                    _ => {
+                        circle_of.insert(n, (arc.center, k));
+                    }
+                }
             }
             let radius = radii.iter().sum::<f64>() / radii.len() as f64;
             for n in &nodes {
