@@ -366,7 +366,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
             if !result.records_past_end.is_empty() {
                 eprintln!(
-                    "note: wear.record asks for steps {:?}, past the last step of this run ({}); they are not recorded and are listed as records_past_end in summary.json",
+                    "note: the recording asks for steps {:?} (wear.record, or the steps the record distances, times or cycles fall on), past the last step of this run ({}); they are not recorded and are listed as records_past_end in summary.json",
                     result.records_past_end,
                     match &result.history.stopped {
                         Some((step, reason)) => format!("it stopped at step {step}: {reason}"),
