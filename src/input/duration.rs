@@ -114,7 +114,7 @@ pub fn half_periods_of(steps: usize, schedule: &[ScheduleEntry]) -> u64 {
 /// [`MAX_STEPS`], and an error message when a step would have nothing to do (a schedule that
 /// changes k after an odd step can leave the direction whose turn it is with nothing due).
 ///
-/// Between targets the cut is [`crate::wear_units::steps_for`]'s: each step's k cut to what
+/// Between targets (and for a single target, [`crate::wear_units::steps_for`]) each step's k is cut to what
 /// its direction still needs (⌈H/2⌉ and ⌊H/2⌋ of H half periods in all), and when one
 /// direction is done the other's next step takes all it still needs.
 pub fn steps_through(

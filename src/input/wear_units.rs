@@ -30,7 +30,7 @@
 //! to k − 1 more half periods in one direction than in the other, and the worn profile skewed.
 //! `[wear.adaptive]` chooses k itself: it takes `steps` only.
 
-use crate::kinematics::{factor, paper_schedule, ScheduleEntry};
+use crate::kinematics::{paper_schedule, ScheduleEntry};
 use crate::wear::{WearLaw, WearSpec, MAX_FACTOR, MAX_STEPS};
 use serde::Deserialize;
 
@@ -279,57 +279,18 @@ pub fn steps_for(
     schedule: &[ScheduleEntry],
     alternating: bool,
 ) -> Option<(usize, Vec<ScheduleEntry>)> {
-    // Half periods still due in the first direction (odd steps) and in the other (even ones).
-    let mut due = if alternating {
-        [half_periods.div_ceil(2), half_periods / 2]
-    } else {
-        [half_periods, 0]
-    };
-    let mut factors: Vec<u64> = Vec::new();
-    let mut cut = false;
-    for n in 1..=MAX_STEPS {
-        let scheduled = factor(schedule, n).max(1) as u64;
-        let (own, other) = if alternating && n % 2 == 0 {
-            (1, 0)
-        } else {
-            (0, 1)
-        };
-        let k = if alternating && due[other] == 0 {
-            // The last step: the other direction is done.
-            due[own]
-        } else {
-            due[own].min(scheduled)
-        };
-        cut |= k != scheduled;
-        due[own] -= k;
-        factors.push(k);
-        if due == [0, 0] {
-            if !cut {
-                return Some((n, schedule.to_vec()));
-            }
-            // The factors step by step, as entries (runs of equal k); the last one open.
-            let mut entries: Vec<ScheduleEntry> = Vec::new();
-            for (m, &k) in factors.iter().enumerate() {
-                match entries.last_mut() {
-                    Some(e) if e.k as u64 == k => e.until = Some(m + 1),
-                    _ => entries.push(ScheduleEntry {
-                        until: Some(m + 1),
-                        k: usize::try_from(k).unwrap_or(usize::MAX),
-                    }),
-                }
-            }
-            if let Some(last) = entries.last_mut() {
-                last.until = None;
-            }
-            return Some((n, entries));
-        }
-    }
-    None
+    // One target: the record points' cut with none between (its error, a step with nothing
+    // due, cannot arise when the steps start from nothing).
+    crate::input::duration::steps_through(&[half_periods], schedule, alternating)
+        .ok()
+        .flatten()
+        .map(|t| (t.steps, t.schedule))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::kinematics::factor;
 
     /// Hand calculation: Archard's k = 2·10⁻⁶ mm³/(N·m) (a hard steel pair). Over s = 1 m at
     /// p = 10 MPa the wear depth is w = k p s = 2·10⁻⁶ · 10 · 1 = 2·10⁻⁵ mm. The model's rule over
