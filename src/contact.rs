@@ -25,6 +25,7 @@ pub mod mortar;
 mod plate;
 pub mod resolution;
 mod spec;
+pub mod track;
 pub mod zone;
 use flexibility::add_flexibility;
 pub use mortar::SurfaceMisfit;

@@ -3,5 +3,6 @@
 pub mod driver;
 pub mod heat;
 mod run;
+pub mod sliding;
 pub mod sweep;
 pub mod validate;

@@ -4,4 +4,5 @@ pub mod deformation;
 pub mod json;
 pub mod output;
 pub mod plot;
+pub mod sliding;
 pub mod vtk;

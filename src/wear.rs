@@ -18,6 +18,7 @@ pub mod kinematics;
 pub mod law;
 mod outcome;
 mod schemes;
+pub mod sliding;
 mod step;
 pub mod thermal;
 mod workspace;
@@ -524,6 +525,19 @@ impl WearIntegrator {
             .iter()
             .map(|l| (l.beta * self.sliding(l.a), l.b))
             .collect()
+    }
+
+    /// The wear law of body `body` (0: body 1, 1: body 2), if it wears (β̃ > 0).
+    pub fn law_of(&self, body: usize) -> Option<WearLaw> {
+        self.law_bodies
+            .iter()
+            .position(|&b| b == body)
+            .map(|k| self.laws[k])
+    }
+
+    /// The extrapolation schedule (validated).
+    pub fn schedule(&self) -> &[ScheduleEntry] {
+        &self.schedule
     }
 
     /// Whether the sliding is monotonic (one direction) rather than reciprocating.

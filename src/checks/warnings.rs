@@ -328,7 +328,7 @@ pub fn model_warnings(
                 "stroke-body2",
                 &problem.file,
                 format!(
-                    "wear.amplitude: the stroke 2u₀ = {stroke:.4} mm is {:.0} % of the contact zone's {zone:.4} mm and body 2 wears: its worn depth is overstated up to about {:.1} times (fixed contact pairs)",
+                    "wear.amplitude: the stroke 2u₀ = {stroke:.4} mm is {:.0} % of the contact zone's {zone:.4} mm and body 2 wears: its worn depth is overstated up to about {:.1} times (fixed contact pairs; contact.pairs = \"sliding\" spreads it over the track)",
                     100.0 * stroke / zone,
                     (stroke + zone) / zone
                 ),
@@ -340,7 +340,7 @@ pub fn model_warnings(
             "stroke",
             &problem.file,
             format!(
-                "wear.amplitude: the stroke 2u₀ = {:.4} mm is {:.0} % of the contact edge's {:.4} mm: the fixed contact pairs describe a shorter stroke",
+                "wear.amplitude: the stroke 2u₀ = {:.4} mm is {:.0} % of the contact edge's {:.4} mm: the fixed contact pairs describe a shorter stroke (contact.pairs = \"sliding\" follows the stroke)",
                 2.0 * wear.amplitude,
                 100.0 * 2.0 * wear.amplitude / length,
                 length

@@ -350,3 +350,44 @@ pub(crate) fn steady_by(
     );
     Ok(())
 }
+
+/// `wearfem run` on sliding pairs: the run, its files, and the console's account of it.
+pub(crate) fn run_sliding(
+    p: &wearfem::problem::Problem,
+    out: &Path,
+    steps: Option<usize>,
+    vtk: bool,
+) -> Result<(), Failure> {
+    if vtk {
+        return Err(Failure::Input(format!("{}: ParaView files of sliding pairs are not written yet; run without --vtk (and without output.vtk)", p.file)));
+    }
+    let run = wearfem::jobs::sliding::wear(p, steps)?;
+    wearfem::report::sliding::write(out, p, &run)?;
+    let h = &run.history;
+    let volume = h
+        .steps
+        .last()
+        .map_or([0.0; 2], |s| s.worn_area.map(|a| a * run.thickness));
+    println!(
+        "{}: sliding pairs, {} positions per half period, {} steps ({} half periods, {:.4} m), worn volume {:.4e} mm³ of \"{}\" and {:.4e} mm³ of \"{}\", set-up {:.2} s, run {:.2} s → {}",
+        p.file,
+        run.contact.len(),
+        h.steps.len(),
+        h.steps.last().map_or(0, |s| s.half_period),
+        run.distance() / 1e3,
+        volume[0],
+        run.body_names[0],
+        volume[1],
+        run.body_names[1],
+        run.setup_seconds,
+        run.run_seconds,
+        out.display()
+    );
+    for w in run.warnings(p) {
+        eprintln!("{w}");
+    }
+    if let Some((step, reason)) = &h.stopped {
+        return Err(Failure::Compute(format!("step {step}: {reason}; the run stopped there, and the {} steps before it were written to {} (nothing from step {step})", step - 1, out.display())));
+    }
+    Ok(())
+}

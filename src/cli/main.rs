@@ -353,6 +353,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
         } => {
             let name = problem.unwrap_or_else(|| "punch-b40".to_string());
             let p = load(&name, &set)?;
+            if wearfem::jobs::sliding::is_sliding(&p) {
+                return commands::run_sliding(&p, &out, steps, wants_vtk(vtk, &p));
+            }
             let bar = progress::StepBar::new(&p, steps, quiet);
             let result = driver::wear_checked(&p, steps, |s| {
                 bar.step(s);

@@ -42,6 +42,15 @@ pub struct ContactSpec {
     /// [`crate::mesh::Mesh::aligned_to`]). False keeps body 2's mesh as given.
     #[serde(default = "yes")]
     pub align_target_mesh: bool,
+    /// "fixed" (default; the paper's model: each contact point of body 1 always faces the same
+    /// point of body 2) or "sliding" (body 2 moves along its track under body 1, and wears
+    /// where the stroke brings it; [`crate::contact::track`]).
+    #[serde(default = "fixed")]
+    pub pairs: String,
+    /// Sliding pairs: positions of the stroke resolved per half period (default: enough for
+    /// steps of at most 1/16 of body 1's contact edge, at least 4; see
+    /// [`crate::contact::track::default_positions`]).
+    pub positions: Option<usize>,
 }
 
 /// A circular initial gap (a cylinder of radius `radius` mm touching at x = `center_x`).
@@ -62,6 +71,9 @@ fn active_set() -> String {
 }
 fn yes() -> bool {
     true
+}
+fn fixed() -> String {
+    "fixed".into()
 }
 fn mortar() -> String {
     "mortar".into()
@@ -95,6 +107,7 @@ pub fn check_settings(problem: &Problem) -> Result<(), ProblemError> {
         )?,
         other => return Err(unknown_discretisation(problem, other)),
     }
+    check_pairs(problem, c)?;
     // The meshes as given: the lines added to body 2 under body 1's element ends change no
     // edge's name or whether it lies on the boundary, and would cost three more mesh builds.
     let mesh1 = problem.mesh_as_given(b1)?;
@@ -104,6 +117,95 @@ pub fn check_settings(problem: &Problem) -> Result<(), ProblemError> {
     if let Some(plate) = &problem.spec.plate {
         problem.named_edge(&mesh1, b1, &plate.edge, "plate.edge")?;
         check_plate(problem, plate)?;
+    }
+    Ok(())
+}
+
+/// Most positions per half period accepted for sliding pairs: each is a condensed contact
+/// problem of its own (N² numbers), so 400 of them at 513 points would hold 1.7 GB.
+pub const MAX_POSITIONS: usize = 400;
+
+/// `contact.pairs` and what the sliding model cannot be combined with (yet).
+fn check_pairs(problem: &Problem, c: &ContactSpec) -> Result<(), ProblemError> {
+    match c.pairs.as_str() {
+        "fixed" => {
+            if c.positions.is_some() {
+                return Err(problem.error(
+                    "contact.positions",
+                    "sets the positions along the stroke of sliding pairs; with contact.pairs = \"fixed\" (the default) there are none: remove it or set pairs = \"sliding\"",
+                ));
+            }
+            Ok(())
+        }
+        "sliding" => check_sliding(problem, c),
+        other => Err(problem.error(
+            "contact.pairs",
+            format!("must be \"fixed\" or \"sliding\", got \"{other}\""),
+        )),
+    }
+}
+
+/// What sliding pairs need: mortar traces (body 2 meets body 1 anywhere along its track),
+/// reciprocating sliding, the implicit scheme on a fixed schedule, and no heat.
+fn check_sliding(problem: &Problem, c: &ContactSpec) -> Result<(), ProblemError> {
+    let needs_fixed = |key: &str, why: &str| {
+        problem.error(
+            key,
+            format!("is not available with contact.pairs = \"sliding\": {why}"),
+        )
+    };
+    if c.discretisation != "mortar" {
+        return Err(needs_fixed(
+            "contact.discretisation",
+            "\"collocation\" pairs each contact point with one point of body 2 for good; sliding pairs need \"mortar\", which couples body 1's points with whatever part of body 2 the stroke brings under them",
+        ));
+    }
+    if let Some(m) = c.positions {
+        if !(1..=MAX_POSITIONS).contains(&m) {
+            return Err(problem.error(
+                "contact.positions",
+                format!("must lie from 1 to {MAX_POSITIONS}, got {m}"),
+            ));
+        }
+    }
+    if problem.spec.heat.is_some() {
+        return Err(needs_fixed(
+            "heat",
+            "the frictional heat of a moving slider (a moving source on body 2's track) is not built yet; use fixed pairs for heat",
+        ));
+    }
+    let Some(w) = &problem.spec.wear else {
+        return Ok(());
+    };
+    if w.sliding != "reciprocating" {
+        return Err(needs_fixed(
+            "wear.sliding",
+            "monotonic sliding moves body 2 past body 1 for good and needs a closed track (a ring or a disc), which is not built yet; use fixed pairs (the default) for monotonic sliding",
+        ));
+    }
+    if w.adaptive.is_some() {
+        return Err(needs_fixed(
+            "wear.adaptive",
+            "the error-controlled schedule measures the fixed pairs' half-period wear; give a schedule (wear.extrapolation) instead",
+        ));
+    }
+    if w.scheme != "implicit" {
+        return Err(needs_fixed(
+            "wear.scheme",
+            "sliding pairs integrate each position implicitly; the paper's fixed-point iteration is for fixed pairs",
+        ));
+    }
+    if w.substeps != 0 {
+        return Err(needs_fixed(
+            "wear.substeps",
+            "sliding pairs resolve the half period into positions along the stroke (contact.positions) instead",
+        ));
+    }
+    if w.shape_zero_at.is_some() {
+        return Err(needs_fixed(
+            "wear.shape_zero_at",
+            "body 2's track is its own profile, which a shift of body 1 cannot zero",
+        ));
     }
     Ok(())
 }

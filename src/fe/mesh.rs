@@ -11,6 +11,7 @@ use std::collections::HashMap;
 mod align;
 mod checks;
 pub mod lines;
+mod translate;
 use checks::check_lines;
 pub use lines::{equal_lines, graded_lines};
 

@@ -1,0 +1,213 @@
+//! `wearfem run` on a problem with sliding pairs (`contact.pairs = "sliding"`): the set-up
+//! of every position, the run, and what its summary.json says.
+
+use super::driver::{check_contact_probes, contact_probes, direction, method, JobError};
+use crate::complementarity::ContactSolver;
+use crate::contact::track::{default_positions, SlidingContact};
+use crate::contact::CondensedContact;
+use crate::problem::{Problem, ProblemError};
+use crate::report::json::{number, numbers};
+use crate::wear::sliding::{self, SlidingHistory, SlidingSettings};
+use crate::wear::WearIntegrator;
+use serde_json::{json, Value};
+use std::time::Instant;
+
+/// Largest change of the pressure between neighbouring positions of the last cycle, relative
+/// to its peak, above which a run warns that the positions are too few: the pressure is held
+/// over each position's interval, so the wear it deposits is off by about half that change.
+pub const POSITION_CHANGE_LIMIT: f64 = 0.05;
+
+/// A finished sliding-pairs run with its set-up.
+pub struct SlidingRun {
+    /// The positions' condensed contacts.
+    pub contact: SlidingContact,
+    /// What the run did.
+    pub history: SlidingHistory,
+    /// The run's settings.
+    pub settings: SlidingSettings,
+    /// Probe names and their contact point indices.
+    pub probes: Vec<(String, usize)>,
+    /// Seconds spent on the FE set-up and the positions' condensation.
+    pub setup_seconds: f64,
+    /// Seconds spent integrating.
+    pub run_seconds: f64,
+    /// Thickness t, mm.
+    pub thickness: f64,
+    /// The names of body 1 and body 2.
+    pub body_names: [String; 2],
+}
+
+/// Whether `problem` asks for sliding pairs.
+pub fn is_sliding(problem: &Problem) -> bool {
+    problem
+        .spec
+        .contact
+        .as_ref()
+        .is_some_and(|c| c.pairs == "sliding")
+}
+
+/// The wear section as a sliding run's settings (`steps` overrides the duration).
+fn settings(problem: &Problem, steps: Option<usize>) -> Result<SlidingSettings, ProblemError> {
+    let spec = problem
+        .spec
+        .wear
+        .clone()
+        .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
+    let mut spec = crate::wear_units::resolve_duration(&spec)
+        .map_err(|(key, message)| problem.error(key, message))?;
+    if let Some(n) = steps {
+        spec.steps = n;
+        spec.record.retain(|&r| r <= n);
+    }
+    let integrator =
+        WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
+    Ok(SlidingSettings {
+        laws: [integrator.law_of(0), integrator.law_of(1)],
+        amplitude: spec.amplitude,
+        omega: spec.omega,
+        schedule: integrator.schedule().to_vec(),
+        steps: spec.steps,
+        record: spec.record.clone(),
+        first_direction: direction(problem)?,
+        probes: vec![],
+    })
+}
+
+/// Run the wear integration of a sliding-pairs problem.
+pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobError> {
+    crate::contact::check_settings(problem)?;
+    let mut settings = settings(problem, steps)?;
+    let start = Instant::now();
+    let (body1, mut body2) = CondensedContact::bodies(problem)?;
+    let c = problem.spec.contact.as_ref().expect("checked");
+    let count = match c.positions {
+        Some(m) => m,
+        None => {
+            let at_rest = CondensedContact::from_bodies(problem, &body1, &body2)?;
+            let x = &at_rest.points.x;
+            let edge = (x[x.len() - 1][0] - x[0][0]).abs();
+            default_positions(2.0 * settings.amplitude, edge)
+        }
+    };
+    let contact = SlidingContact::build(
+        problem,
+        &body1,
+        &mut body2,
+        settings.amplitude,
+        settings.first_direction.sign(),
+        count,
+    )?;
+    check_contact_probes(problem, &contact.contacts[0])?;
+    let method = method(problem)?;
+    let mut solvers: Vec<ContactSolver> = contact
+        .contacts
+        .iter()
+        .map(|c| ContactSolver::new(c, method))
+        .collect();
+    let setup_seconds = start.elapsed().as_secs_f64();
+    let probes = contact_probes(problem, &contact.contacts[0]);
+    settings.probes = probes.iter().map(|p| p.1).collect();
+    let start = Instant::now();
+    let history = sliding::run(&settings, &contact, &mut solvers);
+    let run_seconds = start.elapsed().as_secs_f64();
+    Ok(SlidingRun {
+        thickness: contact.contacts[0].thickness,
+        contact,
+        history,
+        settings,
+        probes,
+        setup_seconds,
+        run_seconds,
+        body_names: [c.body.clone(), c.target_body.clone()],
+    })
+}
+
+impl SlidingRun {
+    /// Sliding distance of the completed steps, mm.
+    pub fn distance(&self) -> f64 {
+        let half_periods = self.history.steps.last().map_or(0, |s| s.half_period);
+        2.0 * self.settings.amplitude * half_periods as f64
+    }
+
+    /// The largest change of the pressure between neighbouring positions in the last cycle,
+    /// relative to the peak pressure of that cycle (None before a full cycle).
+    pub fn position_change(&self) -> Option<f64> {
+        let cycle = &self.history.last_cycle;
+        if cycle.iter().any(|d| d.iter().any(|p| p.is_empty())) {
+            return None;
+        }
+        let peak = cycle
+            .iter()
+            .flatten()
+            .flatten()
+            .fold(0.0f64, |a, &b| a.max(b));
+        let change = cycle
+            .iter()
+            .flat_map(|d| d.windows(2))
+            .flat_map(|w| w[0].iter().zip(&w[1]).map(|(a, b)| (a - b).abs()))
+            .fold(0.0f64, f64::max);
+        (peak > 0.0).then(|| change / peak)
+    }
+
+    /// One-line warnings about the run.
+    pub fn warnings(&self, problem: &Problem) -> Vec<String> {
+        let mut out = Vec::new();
+        if let Some(change) = self.position_change() {
+            if change > POSITION_CHANGE_LIMIT {
+                out.push(crate::codes::warning(
+                    "few-positions",
+                    &problem.file,
+                    format!(
+                        "the pressure changes by {:.1} % of its peak between neighbouring positions of the stroke ({} per half period); the wear deposited between them is off by about half that: raise contact.positions",
+                        100.0 * change,
+                        self.contact.len()
+                    ),
+                ));
+            }
+        }
+        out
+    }
+
+    /// summary.json of the run.
+    pub fn summary(&self, problem: &Problem) -> Value {
+        let h = &self.history;
+        let points = &self.contact.contacts[0].points;
+        let t = self.thickness;
+        let area = h.steps.last().map_or([0.0; 2], |s| s.worn_area);
+        let stopped = h
+            .stopped
+            .as_ref()
+            .map(|(step, reason)| json!({"step": step, "reason": reason.to_string()}));
+        let track_x = h.track.centres();
+        json!({
+            "problem": problem.file,
+            "pairs": "sliding",
+            "positions_per_half_period": self.contact.len(),
+            "stroke": number(2.0 * self.settings.amplitude),
+            "positions": numbers(&self.contact.stroke.positions),
+            "steps": h.steps.len(),
+            "half_periods": h.steps.last().map_or(0, |s| s.half_period),
+            "sliding_distance": number(self.distance()),
+            "solves": h.solves,
+            "setup_seconds": number(self.setup_seconds),
+            "run_seconds": number(self.run_seconds),
+            "stopped": stopped,
+            "bodies": self.body_names,
+            "worn_volume": [number(area[0] * t), number(area[1] * t)],
+            "position_change": self.position_change().map(number),
+            "probes": self.probes.iter().map(|(name, i)| json!({"name": name, "point": i, "x": numbers(&points.x[*i])})).collect::<Vec<_>>(),
+            "history": h.steps,
+            "final": {
+                "x": points.x.iter().map(|p| number(p[0])).collect::<Vec<_>>(),
+                "wear_body1": numbers(&h.wear_body1),
+                "p_plus": h.last_cycle[0].iter().map(|p| numbers(p)).collect::<Vec<_>>(),
+                "p_minus": h.last_cycle[1].iter().map(|p| numbers(p)).collect::<Vec<_>>(),
+            },
+            "track": {
+                "x": numbers(&track_x),
+                "wear_body2": numbers(&h.track.wear),
+            },
+            "warnings": self.warnings(problem),
+        })
+    }
+}

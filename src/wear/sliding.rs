@@ -1,0 +1,461 @@
+//! The wear integration of sliding pairs ([`crate::contact::track`]): each half period is
+//! resolved into the stroke's positions, each with its own contact solve, and both bodies'
+//! wear accumulates over them: body 1's at its own points, body 2's along its track.
+//!
+//! # A step
+//!
+//! A step stands for k half periods (the extrapolation schedule, as for fixed pairs), sliding
+//! '+' on odd steps and back on even ones. It visits the positions in the order the stroke
+//! brings them (the reverse order on the way back), and at each position j:
+//!
+//! 1. the gap of body 1's point i is the geometric gap there, g_ij (body 2 translated by
+//!    s_j), plus body 1's wear w₁ᵢ plus the track's wear under the point's share of the
+//!    edge (read in its middle, [`crate::contact::track`]);
+//! 2. the contact solve gives the pressure p_ij, held over the position's interval
+//!    [e_j, e_{j+1}] of the stroke;
+//! 3. body 1's points wear by k β̃₁ p_ijᵇ S_j (S_j = ∫|v|ᵃ dτ over the interval, the same
+//!    sliding integral as fixed pairs use, cut at the interval's phases), and each point's
+//!    share of the edge deposits k β̃₂ p_ijᵇ S_j/|Δs_j| per millimetre of sliding onto the
+//!    track cells it passes over ([`crate::contact::track::Track::sweep`]).
+//!
+//! The solve of step 2 is implicit in the wear of its own interval, as the fixed pairs'
+//! step is in its half period: the wear that the interval adds under point i, linear in the
+//! pressure for b = 1, is a compliance c_i in series with the bodies'
+//! ([`ContactSolver::set_compliance`]). Body 1's part is exact; body 2's part is what the
+//! point deposits under itself, all of it while the interval is shorter than the point's
+//! share of the edge and that share's fraction of it when longer. For b ≠ 1 the compliance
+//! is the secant p^(b−1) of the pressure at the same position in the last half period that
+//! visited it (none at the first visit): it only weights how implicit the step is, since the
+//! wear added is that of the solved pressure. So large k stays stable on stiff meshes, as
+//! for fixed pairs.
+//!
+//! # Looking ahead to the cycle's end
+//!
+//! A step of k half periods wears k times what one does, so the shape a position meets
+//! depends on where in the cycle it comes: under the stroke's first positions the cycle's
+//! wear is still to come, under its last ones it is done. With k = 10 that spread is ten
+//! times the physical one, and the periodic state the scheme settles in moved with k
+//! (punch-b40 with a vanishing stroke: 0.4 % of the peak off the fixed pairs' steady
+//! pressures). The fixed pairs' scheme lets its first half period see the wear its second
+//! half adds; here, once a cycle is complete, every position sees the wear the rest of the
+//! cycle adds (its own interval included), linearised about the last cycle:
+//! k R_i + k D_i (p_i − p̂_i), with R_i the rest of the last cycle's wear under point i per
+//! half period of extrapolation (the last cycle's wear less what this cycle has added so
+//! far), D_i the rest's diagonal (the compliance above, summed over the remaining
+//! intervals) and p̂_i the pressure of this position's last visit. The term in p_i is
+//! implicit, a compliance; the rest is known. Taken explicitly as a whole, the lagged wear
+//! of seven eighths of a cycle made the punch's pressures oscillate by half their peak at
+//! k = 10. In a periodic state p = p̂ and every position meets the cycle's end shape, as
+//! with fixed pairs, and a vanishing stroke gives the fixed pairs' results.
+
+use super::{ScheduleEntry, StopReason, WearLaw};
+use crate::complementarity::{ContactSolution, ContactSolver, Direction, Status};
+use crate::contact::track::{SlidingContact, Track};
+use crate::kinematics::{factor, partial_sliding};
+use serde::Serialize;
+
+/// What a sliding-pairs run needs to know of the wear section, validated.
+#[derive(Clone, Debug)]
+pub struct SlidingSettings {
+    /// Each body's wear law (None: it does not wear).
+    pub laws: [Option<WearLaw>; 2],
+    /// Reciprocating amplitude u₀, mm.
+    pub amplitude: f64,
+    /// Angular frequency ω, rad/s.
+    pub omega: f64,
+    /// Extrapolation schedule.
+    pub schedule: Vec<ScheduleEntry>,
+    /// Number of steps.
+    pub steps: usize,
+    /// Steps at which whole profiles are recorded.
+    pub record: Vec<usize>,
+    /// Sliding direction of the odd steps.
+    pub first_direction: Direction,
+    /// Contact points whose pressure each step reports (indices).
+    pub probes: Vec<usize>,
+}
+
+/// One step of a sliding-pairs run.
+#[derive(Clone, Debug, Serialize)]
+pub struct SlidingStep {
+    /// Step number n (1-based).
+    pub step: usize,
+    /// Half periods done at the end of the step.
+    pub half_period: usize,
+    /// "+" or "−".
+    pub direction: &'static str,
+    /// Extrapolation factor k.
+    pub k: usize,
+    /// Pressure at each probe at the step's last position (a reversal), MPa.
+    pub probes: Vec<f64>,
+    /// Largest pressure over the step's positions, MPa.
+    pub peak_pressure: f64,
+    /// Worn area of body 1 and of body 2 (∫ w ds, mm²; times the thickness, the volume).
+    pub worn_area: [f64; 2],
+    /// Largest wear depth of body 1 and of body 2, mm.
+    pub largest_wear: [f64; 2],
+}
+
+/// The profiles at a recorded step.
+#[derive(Clone, Debug, Serialize)]
+pub struct SlidingSnapshot {
+    /// Step number.
+    pub step: usize,
+    /// Half periods done.
+    pub half_period: usize,
+    /// Body 1's wear at each contact point, mm.
+    pub wear_body1: Vec<f64>,
+    /// Body 2's wear in each track cell, mm.
+    pub track: Vec<f64>,
+    /// The pressure at each position of the step (in `stroke.positions` order), MPa.
+    pub pressures: Vec<Vec<f64>>,
+}
+
+/// The result of a sliding-pairs run.
+#[derive(Clone, Debug)]
+pub struct SlidingHistory {
+    /// One record per completed step.
+    pub steps: Vec<SlidingStep>,
+    /// Profiles at the recorded steps.
+    pub snapshots: Vec<SlidingSnapshot>,
+    /// Body 1's wear at each contact point after the last completed step, mm.
+    pub wear_body1: Vec<f64>,
+    /// Body 2's track after the last completed step.
+    pub track: Track,
+    /// The pressures of the last '+' and '−' half periods at each position (in
+    /// `stroke.positions` order), MPa; empty until the direction has been slid.
+    pub last_cycle: [Vec<Vec<f64>>; 2],
+    /// Contact solves made.
+    pub solves: usize,
+    /// The step at which the run stopped early and why; nothing of that step is kept.
+    pub stopped: Option<(usize, StopReason)>,
+}
+
+/// Each body's wear, as a whole or as a part of it: body 1's at its points, body 2's along
+/// the track.
+#[derive(Clone)]
+struct Wear {
+    body1: Vec<f64>,
+    track: Track,
+}
+
+impl Wear {
+    fn zero(&mut self) {
+        self.body1.fill(0.0);
+        self.track.wear.fill(0.0);
+    }
+
+    /// self += factor × other.
+    fn add(&mut self, factor: f64, other: &Wear) {
+        for (a, b) in self.body1.iter_mut().zip(&other.body1) {
+            *a += factor * b;
+        }
+        for (a, b) in self.track.wear.iter_mut().zip(&other.track.wear) {
+            *a += factor * b;
+        }
+    }
+
+    /// The gap's part at point i reading the track at x.
+    fn at(&self, i: usize, x: f64) -> f64 {
+        self.body1[i] + self.track.at(x)
+    }
+}
+
+/// What one step keeps for the next and for the results.
+struct State {
+    /// The wear of the completed steps.
+    done: Wear,
+    /// The wear of the step under way.
+    step: Wear,
+    /// The wear of this cycle's completed steps, per unit k, and of the last whole cycle.
+    cycle: [Wear; 2],
+    /// Whether a whole cycle has been completed (and `cycle[1]` holds it).
+    ahead: bool,
+    /// The pressure at each position in each direction, last visit ('+', '−').
+    last: [Vec<Vec<f64>>; 2],
+}
+
+/// Integrate the sliding pairs' wear over `settings.steps` steps; `solvers` holds one solver
+/// per position of `contact` (in `stroke.positions` order).
+pub fn run(
+    settings: &SlidingSettings,
+    contact: &SlidingContact,
+    solvers: &mut [ContactSolver],
+) -> SlidingHistory {
+    let m = contact.len();
+    let n = contact.contacts[0].len();
+    let sliding = interval_sliding(settings, m);
+    let unworn = Wear {
+        body1: vec![0.0; n],
+        track: contact.empty_track(),
+    };
+    let mut state = State {
+        done: unworn.clone(),
+        step: unworn.clone(),
+        cycle: [unworn.clone(), unworn.clone()],
+        ahead: false,
+        last: [vec![vec![]; m], vec![vec![]; m]],
+    };
+    let mut history = SlidingHistory {
+        steps: Vec::with_capacity(settings.steps.min(100_000)),
+        snapshots: vec![],
+        wear_body1: vec![],
+        track: unworn.track.clone(),
+        last_cycle: [vec![], vec![]],
+        solves: 0,
+        stopped: None,
+    };
+    let mut half_periods = 0;
+    let mut solution = ContactSolution::default();
+    let mut gap = vec![0.0; n];
+    let mut compliance = vec![0.0; n];
+    for step in 1..=settings.steps {
+        let forward = step % 2 == 1;
+        let direction = if forward {
+            settings.first_direction
+        } else {
+            settings.first_direction.reversed()
+        };
+        let k = factor(&settings.schedule, step);
+        state.step.zero();
+        let d = usize::from(!forward);
+        let order: Vec<usize> = if forward {
+            (0..m).collect()
+        } else {
+            (0..m).rev().collect()
+        };
+        let mut peak = 0.0f64;
+        let mut failure = None;
+        for &j in &order {
+            let c = &contact.contacts[j];
+            let s = contact.stroke.positions[j];
+            let kf = k as f64;
+            let last = &state.last[d][j];
+            // The intervals whose wear the solve holds implicitly: its own, and once a cycle
+            // is complete the rest of the cycle (module docs).
+            let rest = if state.ahead {
+                let own_half = if forward { j..m } else { 0..j + 1 };
+                let other_half = if forward { 0..m } else { 0..0 };
+                [own_half, other_half]
+            } else {
+                [j..j + 1, 0..0]
+            };
+            implicit_compliance(
+                settings,
+                contact,
+                j,
+                k,
+                &sliding,
+                rest,
+                last,
+                &mut compliance,
+            );
+            for i in 0..n {
+                let x = contact.readings[i] - s;
+                gap[i] = c.points.initial_gap[i] + state.done.at(i, x) + state.step.at(i, x);
+                if state.ahead {
+                    let area = c.points.weight[i] * c.thickness;
+                    let held = compliance[i] * last.get(i).map_or(0.0, |p| p * area);
+                    gap[i] += kf * (state.cycle[1].at(i, x) - state.cycle[0].at(i, x))
+                        - state.step.at(i, x)
+                        - held;
+                }
+            }
+            solvers[j].set_compliance(&compliance);
+            let info = solvers[j].solve_pressures_into(&gap, direction, &mut solution);
+            history.solves += 1;
+            if info.status != Status::Solved {
+                failure = Some(StopReason::FailedSolve {
+                    complementarity: info.complementarity,
+                    equilibrium: info.equilibrium,
+                });
+                break;
+            }
+            add_wear(
+                settings,
+                contact,
+                j,
+                k,
+                &sliding[j],
+                &solution.pressure,
+                &mut state.step,
+            );
+            peak = solution.pressure.iter().fold(peak, |a, &b| a.max(b));
+            state.last[d][j].clone_from(&solution.pressure);
+        }
+        let finite = (state.step.body1.iter())
+            .chain(&state.step.track.wear)
+            .all(|w| w.is_finite());
+        if failure.is_none() && !finite {
+            failure = Some(StopReason::NonFiniteWear);
+        }
+        if let Some(reason) = failure {
+            // Nothing of this step is kept.
+            history.stopped = Some((step, reason));
+            break;
+        }
+        state.done.add(1.0, &state.step);
+        state.cycle[0].add(1.0 / k as f64, &state.step);
+        if !forward {
+            state.cycle.swap(0, 1);
+            state.cycle[0].zero();
+            state.ahead = true;
+        }
+        half_periods += k;
+        let last_position = *order.last().unwrap_or(&0);
+        let pressures = &state.last[d];
+        let record = SlidingStep {
+            step,
+            half_period: half_periods,
+            direction: direction.symbol(),
+            k,
+            probes: settings
+                .probes
+                .iter()
+                .map(|&i| pressures[last_position][i])
+                .collect(),
+            peak_pressure: peak,
+            worn_area: worn_area(contact, &state),
+            largest_wear: [
+                state.done.body1.iter().fold(0.0, |a: f64, &b| a.max(b)),
+                state
+                    .done
+                    .track
+                    .wear
+                    .iter()
+                    .fold(0.0, |a: f64, &b| a.max(b)),
+            ],
+        };
+        history.steps.push(record);
+        if settings.record.contains(&step) {
+            history.snapshots.push(SlidingSnapshot {
+                step,
+                half_period: half_periods,
+                wear_body1: state.done.body1.clone(),
+                track: state.done.track.wear.clone(),
+                pressures: pressures.clone(),
+            });
+        }
+    }
+    history.wear_body1 = state.done.body1;
+    history.track = state.done.track;
+    history.last_cycle = state.last;
+    history
+}
+
+/// Per position: the interval's length of offset |Δs_j| (mm) and each body's sliding integral
+/// S_j = ∫|v|ᵃ dτ over it (mm^a s^(1−a); = |Δs_j| for a = 1).
+struct IntervalSliding {
+    length: f64,
+    per_body: [f64; 2],
+}
+
+fn interval_sliding(settings: &SlidingSettings, m: usize) -> Vec<IntervalSliding> {
+    // The offset −u₀ cos θ cut into m equal parts: cos θ_j = 1 − 2j/m.
+    let theta = |j: usize| (1.0 - 2.0 * j as f64 / m as f64).clamp(-1.0, 1.0).acos();
+    (0..m)
+        .map(|j| {
+            let phases = [theta(j), theta(j + 1)];
+            let per_body = settings.laws.map(|law| {
+                law.map_or(0.0, |l| {
+                    partial_sliding(settings.amplitude, settings.omega, l.a, phases)
+                })
+            });
+            IntervalSliding {
+                length: 2.0 * settings.amplitude / m as f64,
+                per_body,
+            }
+        })
+        .collect()
+}
+
+/// The wear compliance c_i (mm/N) that position j's solve holds: the depth the intervals
+/// `rest` (ranges of positions, in either half period: the sliding integrals are the same
+/// both ways) add under point i per unit contact force there, k half periods of each (see
+/// the module's docs).
+#[allow(clippy::too_many_arguments)]
+fn implicit_compliance(
+    settings: &SlidingSettings,
+    contact: &SlidingContact,
+    j: usize,
+    k: usize,
+    sliding: &[IntervalSliding],
+    rest: [std::ops::Range<usize>; 2],
+    last: &[f64],
+    out: &mut [f64],
+) {
+    let c = &contact.contacts[j];
+    let peak = last.iter().fold(0.0f64, |a, &b| a.max(b));
+    let length = sliding[j].length;
+    let summed: [f64; 2] = std::array::from_fn(|body| {
+        rest.iter()
+            .flat_map(|r| r.clone())
+            .map(|q| sliding[q].per_body[body])
+            .sum()
+    });
+    for (i, value) in out.iter_mut().enumerate() {
+        let share = contact.cells[i + 1] - contact.cells[i];
+        let under_itself = [1.0, (share / length).min(1.0)];
+        let mut depth_per_pressure = 0.0;
+        for body in 0..2 {
+            let Some(law) = settings.laws[body] else {
+                continue;
+            };
+            let secant = if law.b == 1.0 {
+                1.0
+            } else if last.is_empty() || peak <= 0.0 {
+                0.0
+            } else {
+                last[i].max(1e-3 * peak).powf(law.b - 1.0)
+            };
+            depth_per_pressure += law.beta * secant * summed[body] * under_itself[body];
+        }
+        *value = k as f64 * depth_per_pressure / (c.points.weight[i] * c.thickness);
+    }
+}
+
+/// Both bodies' wear of position j's interval under `pressure` (MPa), k half periods of it.
+fn add_wear(
+    settings: &SlidingSettings,
+    contact: &SlidingContact,
+    j: usize,
+    k: usize,
+    sliding: &IntervalSliding,
+    pressure: &[f64],
+    wear: &mut Wear,
+) {
+    let c = &contact.contacts[j];
+    let shift = [contact.stroke.ends[j], contact.stroke.ends[j + 1]];
+    let k = k as f64;
+    if let Some(law) = settings.laws[0] {
+        for (w, &p) in wear.body1.iter_mut().zip(pressure) {
+            *w += k * law.beta * p.powf(law.b) * sliding.per_body[0];
+        }
+    }
+    if let Some(law) = settings.laws[1] {
+        for (i, &p) in pressure.iter().enumerate() {
+            if p <= 0.0 {
+                continue;
+            }
+            let (from, to) = (contact.cells[i], contact.cells[i + 1]);
+            // Point i's wear spread over its share of the edge, per mm of sliding.
+            let spread = c.points.weight[i] / (to - from);
+            let rate = k * law.beta * p.powf(law.b) * sliding.per_body[1] / sliding.length;
+            wear.track.sweep(from, to, shift, rate * spread);
+        }
+    }
+}
+
+fn worn_area(contact: &SlidingContact, state: &State) -> [f64; 2] {
+    let weight = &contact.contacts[0].points.weight;
+    [
+        state
+            .done
+            .body1
+            .iter()
+            .zip(weight)
+            .map(|(w, l)| w * l)
+            .sum(),
+        state.done.track.area(),
+    ]
+}

@@ -1,0 +1,323 @@
+//! Sliding contact pairs (`contact.pairs = "sliding"`, issue 29) against what must hold
+//! whatever the meshes: Archard's law per body, the trough a long stroke paints on a flat,
+//! and the fixed pairs' results as the stroke goes to zero.
+
+use wearfem::jobs::sliding::{self, SlidingRun};
+use wearfem::problem::Problem;
+
+/// A cylinder of radius `radius` (contact.initial_shape) on a long steel flat, sliding pairs;
+/// `wear` is the `[wear]` section's body, `extra` is added to `[contact]`.
+fn slider_on_flat(radius: f64, wear: &str, extra: &str) -> String {
+    format!(
+        r#"
+title = "a slider on a long flat"
+[analysis]
+kind = "plane_strain"
+thickness = 10.0
+p = 6
+[materials.steel]
+young = 2.0e5
+poisson = 0.3
+[materials.bronze]
+young = 1.1e5
+poisson = 0.34
+[[bodies]]
+name = "slider"
+[[bodies.blocks]]
+corners = [[-5.0, 0.0], [5.0, 0.0], [5.0, 5.0], [-5.0, 5.0]]
+u = 16
+v = [0.0, 0.2, 0.5, 1.0]
+material = "bronze"
+names = {{ bottom = "contact", top = "top" }}
+[[bodies.tractions]]
+edge = "top"
+normal = 10.0
+[[bodies]]
+name = "flat"
+[[bodies.blocks]]
+corners = [[-70.0, -20.0], [70.0, -20.0], [70.0, 0.0], [-70.0, 0.0]]
+u = 210
+v = [0.0, 0.5, 0.8, 1.0]
+material = "steel"
+names = {{ bottom = "base", top = "surface" }}
+[[bodies.supports]]
+edge = "base"
+fix = ["x", "z"]
+[contact]
+body = "slider"
+edge = "contact"
+target_body = "flat"
+target_edge = "surface"
+friction = 0.3
+pairs = "sliding"
+initial_shape = {{ radius = {radius}, center_x = 0.0 }}
+{extra}
+[plate]
+edge = "top"
+motion = "vertical"
+[wear]
+sliding = "reciprocating"
+omega = 10.0
+{wear}
+"#
+    )
+}
+
+fn run(text: &str) -> SlidingRun {
+    let problem = Problem::from_toml(text, "sliding-test").unwrap();
+    let run = sliding::wear(&problem, None).unwrap();
+    assert!(run.history.stopped.is_none(), "{:?}", run.history.stopped);
+    run
+}
+
+/// The load per unit thickness F/t, N/mm: 10 MPa over the slider's 10 mm top.
+const LOAD_PER_THICKNESS: f64 = 100.0;
+
+#[test]
+fn each_body_wears_archards_volume_at_every_step() {
+    // a = b = 1: body i's worn area (per unit thickness) is β̃ᵢ F s / t for the sliding
+    // distance s, whatever the pressure: each position's pressures balance the load
+    // exactly (Σ pᵢ wᵢ t = F on a flat edge, friction being tangential there), and the
+    // positions' intervals add up to the stroke. Extrapolated steps (k = 5) included.
+    let text = slider_on_flat(
+        2000.0,
+        "body1 = { beta = 2.0e-7, a = 1.0, b = 1.0 }\nbody2 = { beta = 5.0e-7, a = 1.0, b = 1.0 }\namplitude = 4.0\nsteps = 12\nextrapolation = [{ until = 4, k = 1 }, { k = 5 }]",
+        "positions = 12",
+    );
+    let run = run(&text);
+    let stroke = 8.0;
+    for step in &run.history.steps {
+        let s = stroke * step.half_period as f64;
+        for (body, beta) in [(0, 2.0e-7), (1, 5.0e-7)] {
+            let expected = beta * LOAD_PER_THICKNESS * s;
+            let relative = (step.worn_area[body] - expected).abs() / expected;
+            // The solver's equilibrium residual (1e-10 of the load and below) and the sums'
+            // round-off; the issue asks 1e-6.
+            assert!(
+                relative < 1e-6,
+                "step {}: body {} worn area {} against {expected} ({relative:.2e})",
+                step.step,
+                body + 1,
+                step.worn_area[body]
+            );
+        }
+    }
+}
+
+#[test]
+fn a_long_stroke_paints_a_flat_bottomed_trough() {
+    // Stroke 2u₀ = 100 mm against a contact about 5 mm wide, only the flat wearing, one half
+    // period. Every track point passed over by the whole contact collects β̃₂ ∫ p dx =
+    // β̃₂ F/t (whatever the pressure's shape); the trough ends in ramps as wide as the
+    // contact at the stroke's ends, and nothing lies beyond them.
+    let beta = 1.0e-6;
+    let text = slider_on_flat(
+        5000.0,
+        "body2 = { beta = 1.0e-6, a = 1.0, b = 1.0 }\namplitude = 50.0\nsteps = 1\nextrapolation = [{ k = 1 }]",
+        "",
+    );
+    let run = run(&text);
+    let depth = beta * LOAD_PER_THICKNESS;
+    let track = &run.history.track;
+    let x = track.centres();
+    let contact_edge = 10.0; // the slider's width bounds the contact zone
+    for (xi, w) in x.iter().zip(&track.wear) {
+        if xi.abs() < 30.0 {
+            // Where the whole contact passes over a point with the pressure's shape
+            // unchanged. Nearer the stroke's ends the flat's own ends (15–20 mm beyond)
+            // change the pressure's shape along the stroke, and the depth with it (0.5 % at
+            // x = 44.8 mm); the convolution below covers those points. 0.5 % is what the
+            // issue asks of the trough.
+            assert!(
+                (w - depth).abs() < 5e-3 * depth,
+                "x = {xi}: depth {w} against {depth}"
+            );
+        }
+        if xi.abs() > 50.0 + contact_edge / 2.0 + track.cell {
+            assert_eq!(*w, 0.0, "x = {xi}: wear beyond the stroke's reach");
+        }
+    }
+    // Against the convolution of the position-resolved pressure with the stroke, evaluated
+    // independently of the track's cells: at a track point X, Σ_j ∫ p_j(X + s) ds over
+    // position j's interval, p_j the polynomial of degree p through each element's points
+    // (the field the contact points' Lobatto weights integrate exactly), integrated by the
+    // midpoint rule with 40 points per interval.
+    let contact = &run.contact;
+    let points: Vec<f64> = contact.contacts[0].points.x.iter().map(|p| p[0]).collect();
+    let degree = 6;
+    let pressure_at = |p: &[f64], x: f64| -> f64 {
+        if x <= points[0] || x >= points[points.len() - 1] {
+            return 0.0;
+        }
+        let element = (points.partition_point(|&xi| xi <= x) - 1) / degree;
+        let nodes = element * degree..=element * degree + degree;
+        nodes
+            .clone()
+            .map(|a| {
+                let lagrange: f64 = nodes
+                    .clone()
+                    .filter(|&b| b != a)
+                    .map(|b| (x - points[b]) / (points[a] - points[b]))
+                    .product();
+                lagrange * p[a]
+            })
+            .sum()
+    };
+    let forward = &run.history.last_cycle[0];
+    let ends = &contact.stroke.ends;
+    let mut worst = 0.0f64;
+    for probe in [
+        -52.0, -50.5, -48.0, -20.0, 0.0, 33.3, 48.7, 50.0, 51.5, 53.0,
+    ] {
+        let mut expected = 0.0;
+        for (j, p) in forward.iter().enumerate() {
+            let (a, b) = (ends[j], ends[j + 1]);
+            let n = 40;
+            for q in 0..n {
+                let s = a + (b - a) * (q as f64 + 0.5) / n as f64;
+                expected += pressure_at(p, probe + s) * (b - a) / n as f64;
+            }
+        }
+        worst = worst.max((track.at(probe) - beta * expected).abs());
+    }
+    // 0.5 % of the trough's depth, as the issue asks.
+    assert!(worst < 5e-3 * depth, "worst {worst} against depth {depth}");
+}
+
+/// punch-b40 on mortar traces, both bodies wearing, `shape_zero_at` removed (sliding pairs
+/// have no shift), with the amplitude and body 2's law given.
+fn punch(amplitude: f64, scale: f64, sliding: bool) -> Problem {
+    let text = wearfem::examples::example("punch-b40").unwrap();
+    let text = text
+        .replace("discretisation = \"collocation\"", "discretisation = \"mortar\"")
+        .replace("shape_zero_at = 1100.0", "")
+        .replace("amplitude = 1.5 ", &format!("amplitude = {amplitude} "))
+        .replace(
+            "body1 = { beta = 3.9269908169872414e-8, a = 1.0, b = 1.0 }",
+            &format!(
+                "body1 = {{ beta = {}, a = 1.0, b = 1.0 }}\nbody2 = {{ beta = {}, a = 1.0, b = 1.0 }}",
+                3.9269908169872414e-8 * scale,
+                1.0e-8 * scale
+            ),
+        )
+        .replace("steps = 1700 ", "steps = 300 ")
+        .replace("record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]", "");
+    let text = if sliding {
+        text.replace(
+            "discretisation = \"mortar\"",
+            "discretisation = \"mortar\"\npairs = \"sliding\"\npositions = 4",
+        )
+    } else {
+        text
+    };
+    Problem::from_toml(&text, "punch-b40-variant").unwrap()
+}
+
+#[test]
+fn a_vanishing_stroke_gives_the_fixed_pairs_results() {
+    // The fixed pairs wear by β̃ p 2u₀ a half period; a stroke of 2 µm with β̃ 1500 times
+    // larger wears as much, so both runs must end at the same pressures and shapes.
+    let fixed = wearfem::driver::wear(&punch(1.5, 1.0, false), None, |_| {}).unwrap();
+    let slide = sliding::wear(&punch(1.0e-3, 1500.0, true), None).unwrap();
+    assert!(fixed.history.stopped.is_none() && slide.history.stopped.is_none());
+    let h = &fixed.history;
+    let peak = h.p_plus.iter().fold(0.0f64, |a, &b| a.max(b));
+    // The last '+' half period ends at its last position (the stroke's end, 0.75 µm from
+    // where the fixed pairs sit); '−' ends at the first.
+    let m = slide.contact.len();
+    let ends = [
+        (&h.p_plus, &slide.history.last_cycle[0][m - 1]),
+        (&h.p_minus, &slide.history.last_cycle[1][0]),
+    ];
+    for (fixed_p, slide_p) in ends {
+        let worst = fixed_p
+            .iter()
+            .zip(slide_p)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        // The issue asks 0.1 % of the peak.
+        assert!(
+            worst < 1e-3 * peak,
+            "pressure off by {worst} of peak {peak}"
+        );
+    }
+    // Body 2's wear where each contact point reads it (the middle of its share of the edge:
+    // the end points sit on the step a vanishing stroke leaves in the track).
+    let body2: Vec<f64> = slide
+        .contact
+        .readings
+        .iter()
+        .map(|&x| slide.history.track.at(x))
+        .collect();
+    for (fixed_w, slide_w) in [
+        (&h.body_wear[0], &slide.history.wear_body1),
+        (&h.body_wear[1], &body2),
+    ] {
+        let range = fixed_w.iter().fold(0.0f64, |a, &b| a.max(b))
+            - fixed_w.iter().fold(f64::INFINITY, |a, &b| a.min(b));
+        let worst = fixed_w
+            .iter()
+            .zip(slide_w)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        // The issue asks 0.5 % of the worn shape's range.
+        assert!(worst < 5e-3 * range, "wear off by {worst} of range {range}");
+    }
+}
+
+#[test]
+fn options_that_need_fixed_pairs_are_refused_by_name() {
+    let base = slider_on_flat(
+        2000.0,
+        "body1 = { beta = 1e-7 }\namplitude = 4.0\nsteps = 2",
+        "",
+    );
+    for (edit, key) in [
+        (
+            (
+                "pairs = \"sliding\"",
+                "pairs = \"sliding\"\ndiscretisation = \"collocation\"",
+            ),
+            "contact.discretisation",
+        ),
+        (
+            ("pairs = \"sliding\"", "pairs = \"slipping\""),
+            "contact.pairs",
+        ),
+        (
+            ("pairs = \"sliding\"", "pairs = \"sliding\"\npositions = 0"),
+            "contact.positions",
+        ),
+        (
+            (
+                "sliding = \"reciprocating\"",
+                "sliding = \"monotonic\"\nspeed = 1.0\nstep_time = 1.0",
+            ),
+            "wear.sliding",
+        ),
+        (
+            ("steps = 2", "steps = 2\nshape_zero_at = 0.0"),
+            "wear.shape_zero_at",
+        ),
+        (
+            ("pairs = \"sliding\"", "pairs = \"fixed\"\npositions = 3"),
+            "contact.positions",
+        ),
+    ] {
+        let text = base.replace(edit.0, edit.1);
+        let problem = Problem::from_toml(&text, "bad.toml").unwrap();
+        let error = sliding::wear(&problem, None)
+            .err()
+            .expect("refused")
+            .to_string();
+        assert!(error.contains(key), "{key}: {error}");
+    }
+    // A track too short for the stroke names the amplitude.
+    let text = base.replace("amplitude = 4.0", "amplitude = 68.0");
+    let problem = Problem::from_toml(&text, "bad.toml").unwrap();
+    let error = sliding::wear(&problem, None)
+        .err()
+        .expect("refused")
+        .to_string();
+    assert!(error.contains("wear.amplitude"), "{error}");
+}
