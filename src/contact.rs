@@ -28,6 +28,7 @@ mod spec;
 pub mod track;
 pub mod zone;
 use flexibility::add_flexibility;
+pub use flexibility::DofFlexibility;
 pub use mortar::SurfaceMisfit;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
@@ -106,6 +107,15 @@ pub struct CondensedContact {
     /// the polynomial through the constraints' gaps (see
     /// [`CondensedContact::surface_misfit_in_contact`]); empty for collocation.
     pub surface_misfits: Vec<SurfaceMisfit>,
+}
+
+/// What sliding pairs know before a position is condensed ([`track`]).
+#[derive(Clone, Debug)]
+pub struct KnownFlexibility {
+    /// Body 1's part of A_nn and A_nt (row-major N × N), the same at every position.
+    pub body1: [Vec<f64>; 2],
+    /// Body 2's flexibility on the dofs of its track.
+    pub body2: DofFlexibility,
 }
 
 /// What aligning body 2's mesh with body 1's element ends did to it.
@@ -413,6 +423,18 @@ impl CondensedContact {
         body1: &ElasticBody,
         body2: &ElasticBody,
     ) -> Result<CondensedContact, ProblemError> {
+        Self::condense(problem, body1, body2, None)
+    }
+
+    /// [`CondensedContact::from_bodies`], with the flexibilities taken from `known` where it
+    /// holds them (sliding pairs: body 1's part, the same at every position, and body 2's
+    /// flexibility on its track's dofs).
+    pub(crate) fn condense(
+        problem: &Problem,
+        body1: &ElasticBody,
+        body2: &ElasticBody,
+        known: Option<&KnownFlexibility>,
+    ) -> Result<CondensedContact, ProblemError> {
         let (c, b1, b2) = spec::contact_section(problem)?;
         let plate = problem.spec.plate.clone();
         spec::check_plate_edge(problem, c)?;
@@ -444,6 +466,30 @@ impl CondensedContact {
                     ),
                 )
             })?;
+        let edge2 = match known {
+            // Sliding pairs: body 2's edge is long against body 1's (the stroke's length
+            // more), and each point's partner search scans it; the part under body 1 (its x
+            // range and a tenth of it either side, the track being straight along x) holds
+            // every partner. At the 160 positions of a 100 mm stroke over 210 elements the
+            // whole edge's search was a third of the set-up.
+            Some(_) => {
+                let xs = points.x.iter().map(|p| p[0]);
+                let (low, high) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+                    (a.min(x), b.max(x))
+                });
+                let margin = 0.1 * (high - low);
+                edge2
+                    .into_iter()
+                    .filter(|&(element, local)| {
+                        let ends =
+                            [-1.0, 1.0].map(|t| body2.mesh.point_on_edge(element, local, t)[0]);
+                        ends[0].max(ends[1]) >= low - margin
+                            && ends[0].min(ends[1]) <= high + margin
+                    })
+                    .collect()
+            }
+            None => edge2,
+        };
         let (traces2, surface_misfits) =
             body2_traces(problem, c, body1, &chain, body2, &edge2, &mut points)?;
         // Loads on the bodies themselves (all tractions but the plate's, which load the plate)
@@ -480,10 +526,18 @@ impl CondensedContact {
             Vec::new()
         };
         let n = points.x.len();
-        let mut a_nn = vec![0.0; n * n];
-        let mut a_nt = vec![0.0; n * n];
-        for (body, traces) in [(body1, &traces1), (body2, &traces2)] {
-            add_flexibility(problem, body, traces, &points, &mut a_nn, &mut a_nt)?;
+        let (mut a_nn, mut a_nt) = match known {
+            Some(k) => (k.body1[0].clone(), k.body1[1].clone()),
+            None => {
+                let (mut a_nn, mut a_nt) = (vec![0.0; n * n], vec![0.0; n * n]);
+                add_flexibility(problem, body1, &traces1, &points, &mut a_nn, &mut a_nt)?;
+                (a_nn, a_nt)
+            }
+        };
+        let from_known =
+            known.is_some_and(|k| k.body2.add_to(&traces2, &points, &mut a_nn, &mut a_nt));
+        if !from_known {
+            add_flexibility(problem, body2, &traces2, &points, &mut a_nn, &mut a_nt)?;
         }
         let (rigid_modes, rigid_names, plate_load, plate_resultant) = match &plate {
             None => (vec![], vec![], vec![], ([0.0; 2], 0.0)),
@@ -511,6 +565,58 @@ impl CondensedContact {
             surface_misfits,
         };
         Ok(contact)
+    }
+
+    /// What every position of sliding pairs shares ([`KnownFlexibility`]): body 1's part of
+    /// A_nn and A_nt, and body 2's flexibility on the dofs of its contact edge's elements
+    /// that reach into x ∈ `reach` (mm, body 2 at rest).
+    pub(crate) fn sliding_flexibility(
+        problem: &Problem,
+        body1: &ElasticBody,
+        body2: &ElasticBody,
+        reach: [f64; 2],
+    ) -> Result<KnownFlexibility, ProblemError> {
+        let (c, _, b2) = spec::contact_section(problem)?;
+        let edge2 = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?;
+        let (points, traces1) = Self::body1_points(problem, body1)?;
+        let n = points.x.len();
+        let (mut a_nn, mut a_nt) = (vec![0.0; n * n], vec![0.0; n * n]);
+        add_flexibility(problem, body1, &traces1, &points, &mut a_nn, &mut a_nt)?;
+        let mut dofs = Vec::new();
+        for &(element, local) in edge2 {
+            let ends = [-1.0, 1.0].map(|t| body2.mesh.point_on_edge(element, local, t)[0]);
+            if ends[0].max(ends[1]) < reach[0] || ends[0].min(ends[1]) > reach[1] {
+                continue;
+            }
+            let element_dofs = trace_dofs(&body2.dofs, &body2.mesh, &body2.basis, element, local);
+            dofs.extend(element_dofs.iter().flat_map(|&(g, _)| g));
+        }
+        dofs.sort_unstable();
+        dofs.dedup();
+        Ok(KnownFlexibility {
+            body1: [a_nn, a_nt],
+            body2: DofFlexibility::new(problem, body2, &dofs)?,
+        })
+    }
+
+    /// Body 1's contact points and their traces, without body 2 (their partners and initial
+    /// gaps are left empty).
+    pub(crate) fn body1_points(
+        problem: &Problem,
+        body1: &ElasticBody,
+    ) -> Result<(ContactPoints, Vec<Trace>), ProblemError> {
+        let (c, b1, _) = spec::contact_section(problem)?;
+        let edge1 = problem.named_edge(&body1.mesh, b1, &c.edge, "contact.edge")?;
+        let (points, traces, _) = ContactPoints::on_body1(body1, edge1).ok_or_else(|| {
+            problem.error(
+                "contact.edge",
+                format!(
+                    "edge \"{}\" of body 1 is not one connected line of element edges",
+                    c.edge
+                ),
+            )
+        })?;
+        Ok((points, traces))
     }
 
     /// Number of contact points N.

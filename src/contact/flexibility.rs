@@ -52,3 +52,97 @@ pub(super) fn add_flexibility(
     }
     Ok(())
 }
+
+/// A body's flexibility on a set of its dofs, G = K⁻¹ restricted to them (mm/N), made once:
+/// sliding pairs meet body 2 at every position of the stroke through other traces of the
+/// same dofs (those of its track), and each position's part of A_nn and A_nt is then two
+/// products with G instead of a factorisation and a Schur complement of its own.
+#[derive(Clone, Debug)]
+pub struct DofFlexibility {
+    /// Index of each global dof in `g` (usize::MAX: not among them; fixed dofs stay out,
+    /// as they do not move).
+    index: Vec<usize>,
+    /// G, symmetric, column-major.
+    g: faer::Mat<f64>,
+}
+
+impl DofFlexibility {
+    /// G on `dofs` of `body` (global dof numbers).
+    pub fn new(
+        problem: &Problem,
+        body: &ElasticBody,
+        dofs: &[usize],
+    ) -> Result<DofFlexibility, ProblemError> {
+        let rows: Vec<Row> = dofs.iter().map(|&d| vec![(d, 1.0)]).collect();
+        let g = body
+            .row_flexibility(&rows, &rows)
+            .map_err(|e| problem.error("contact", e.to_string()))?;
+        let mut index = vec![usize::MAX; body.dofs.n_dofs()];
+        for (k, &d) in dofs.iter().enumerate() {
+            index[d] = k;
+        }
+        Ok(DofFlexibility { index, g })
+    }
+
+    /// Add the body's part to A_nn and A_nt as [`add_flexibility`] does, from G; false
+    /// (nothing added) if a trace touches a dof outside G.
+    pub(super) fn add_to(
+        &self,
+        traces: &[Trace],
+        points: &ContactPoints,
+        a_nn: &mut [f64],
+        a_nt: &mut [f64],
+    ) -> bool {
+        let project = |directions: &[Point]| -> Option<Vec<Vec<(usize, f64)>>> {
+            traces
+                .iter()
+                .zip(directions)
+                .map(|(tr, v)| {
+                    tr.iter()
+                        .flat_map(|&(g, coef)| [(g[0], coef * v[0]), (g[1], coef * v[1])])
+                        .filter(|e| e.1 != 0.0)
+                        .map(|(d, coef)| match self.index[d] {
+                            usize::MAX => None,
+                            k => Some((k, coef)),
+                        })
+                        .collect()
+                })
+                .collect()
+        };
+        let (Some(normal), Some(tangent)) = (project(&points.normal), project(&points.tangent))
+        else {
+            return false;
+        };
+        let n = points.x.len();
+        // Only the rows of G that this position's traces touch are needed (a few hundred of
+        // the track's thousands).
+        let mut touched: Vec<usize> = normal
+            .iter()
+            .chain(&tangent)
+            .flatten()
+            .map(|e| e.0)
+            .collect();
+        touched.sort_unstable();
+        touched.dedup();
+        let mut column = vec![0.0; self.g.nrows()];
+        for i in 0..n {
+            // G n_iᵀ at the touched rows, from G's columns (G is symmetric).
+            for &k in &touched {
+                column[k] = 0.0;
+            }
+            for &(k, coef) in &normal[i] {
+                let source = self.g.col(k).try_as_col_major().expect("contiguous");
+                let source = source.as_slice();
+                for &r in &touched {
+                    column[r] += coef * source[r];
+                }
+            }
+            let dot = |row: &[(usize, f64)]| row.iter().map(|&(k, c)| c * column[k]).sum::<f64>();
+            for j in 0..n {
+                a_nn[i * n + j] += dot(&normal[j]);
+                a_nt[i * n + j] += dot(&tangent[j]);
+            }
+        }
+        true
+    }
+}

@@ -103,7 +103,9 @@ pub struct CoarseZone {
 /// Arc length of an element edge between parameters a and b (8-point Gauss: exact for
 /// straight edges, and to far better than the comparison needs on arcs).
 fn arc_length(body: &ElasticBody, element: usize, local: usize, a: f64, b: f64) -> f64 {
-    let rule = gauss_legendre(8);
+    // Made once: sliding pairs measure every point at every position of the stroke.
+    static RULE: std::sync::OnceLock<crate::quadrature::Rule1d> = std::sync::OnceLock::new();
+    let rule = RULE.get_or_init(|| gauss_legendre(8));
     let half = 0.5 * (b - a);
     rule.points
         .iter()

@@ -179,9 +179,16 @@ pub fn position_contacts(
     let at_rest = body2.mesh.clone();
     let mut contacts = Vec::with_capacity(stroke.positions.len());
     let mut failure = None;
+    let known = match known_flexibility(problem, body1, body2, stroke) {
+        Ok(k) => k,
+        Err(e) => {
+            body2.mesh = at_rest;
+            return Err(e);
+        }
+    };
     for &s in &stroke.positions {
         body2.mesh = at_rest.translated([s, 0.0]);
-        match CondensedContact::from_bodies(problem, body1, body2) {
+        match CondensedContact::condense(problem, body1, body2, known.as_ref()) {
             Ok(c) => contacts.push(c),
             Err(e) => {
                 failure = Some((s, e));
@@ -278,6 +285,61 @@ impl SlidingContact {
         let last = self.cells[self.cells.len() - 1] - low + cell;
         Track::new(first, last, cell)
     }
+}
+
+/// Most dofs of body 2's track whose flexibility is kept as one dense matrix (8000² numbers:
+/// 512 MB); beyond, each position is condensed on its own (slower, no larger).
+pub const MAX_TRACK_DOFS: usize = 8000;
+
+/// Body 1's flexibility and body 2's on its track, shared by every position; None when the
+/// track has more than [`MAX_TRACK_DOFS`] dofs.
+fn known_flexibility(
+    problem: &Problem,
+    body1: &ElasticBody,
+    body2: &ElasticBody,
+    stroke: &Stroke,
+) -> Result<Option<super::KnownFlexibility>, ProblemError> {
+    let (points, _) = CondensedContact::body1_points(problem, body1)?;
+    let x = &points.x;
+    let (first, last) = (
+        x[0][0].min(x[x.len() - 1][0]),
+        x[0][0].max(x[x.len() - 1][0]),
+    );
+    let (low, high) = stroke
+        .ends
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &e| {
+            (a.min(e), b.max(e))
+        });
+    // A partner element may reach a little beyond the points' own range.
+    let margin = 0.05 * (last - first);
+    let reach = [first - high - margin, last - low + margin];
+    let touched = body2_track_dofs(problem, body2, reach)?;
+    if touched > MAX_TRACK_DOFS {
+        return Ok(None);
+    }
+    CondensedContact::sliding_flexibility(problem, body1, body2, reach).map(Some)
+}
+
+/// How many dofs body 2's contact edge has within x ∈ `reach`.
+fn body2_track_dofs(
+    problem: &Problem,
+    body2: &ElasticBody,
+    reach: [f64; 2],
+) -> Result<usize, ProblemError> {
+    let c = problem.spec.contact.as_ref().expect("checked");
+    let b2 = problem
+        .body_index(&c.target_body)
+        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
+    let edge = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?;
+    let inside = edge
+        .iter()
+        .filter(|&&(element, local)| {
+            let ends = [-1.0, 1.0].map(|t| body2.mesh.point_on_edge(element, local, t)[0]);
+            ends[0].max(ends[1]) >= reach[0] && ends[0].min(ends[1]) <= reach[1]
+        })
+        .count();
+    Ok(2 * (inside * body2.dofs.p + 1))
 }
 
 #[cfg(test)]

@@ -83,8 +83,8 @@ pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobEr
     let count = match c.positions {
         Some(m) => m,
         None => {
-            let at_rest = CondensedContact::from_bodies(problem, &body1, &body2)?;
-            let x = &at_rest.points.x;
+            let (points, _) = CondensedContact::body1_points(problem, &body1)?;
+            let x = &points.x;
             let edge = (x[x.len() - 1][0] - x[0][0]).abs();
             default_positions(2.0 * settings.amplitude, edge)
         }
