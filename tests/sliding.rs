@@ -321,3 +321,80 @@ fn options_that_need_fixed_pairs_are_refused_by_name() {
         .to_string();
     assert!(error.contains("wear.amplitude"), "{error}");
 }
+
+#[test]
+fn the_tribometer_runs_through_the_binary_and_other_jobs_refuse_sliding_pairs() {
+    let dir = std::env::temp_dir().join(format!("wearfem-sliding-{}", std::process::id()));
+    let wearfem = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+            .arg("--quiet")
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let out = dir.join("run");
+    let run = wearfem(&[
+        "run",
+        "tribometer",
+        "--steps",
+        "6",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    for file in [
+        "summary.json",
+        "history.csv",
+        "track.csv",
+        "body1.csv",
+        "positions.csv",
+        "track.png",
+        "positions.png",
+    ] {
+        assert!(out.join(file).exists(), "{file}");
+    }
+    for file in ["history.csv", "track.csv", "body1.csv", "positions.csv"] {
+        let text = std::fs::read_to_string(out.join(file)).unwrap();
+        let mut lines = text.lines();
+        let columns = lines.next().unwrap().split(',').count();
+        for line in lines {
+            let cells: Vec<&str> = line.split(',').collect();
+            assert_eq!(cells.len(), columns, "{file}: {line}");
+            for c in cells {
+                let number = c.parse::<f64>().map(f64::is_finite).unwrap_or(false);
+                assert!(
+                    number || ["+", "-", "−"].contains(&c),
+                    "{file}: {c}"
+                );
+            }
+        }
+    }
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    // Archard per body after 6 half periods of 4 mm: k F s with F = 500 N.
+    for (body, k) in [(0, 5.0e-7), (1, 1.0e-6)] {
+        let volume = summary["worn_volume"][body].as_f64().unwrap();
+        let expected = k * 500.0 * 0.024;
+        assert!(
+            (volume - expected).abs() < 1e-6 * expected,
+            "{body}: {volume}"
+        );
+    }
+    for (args, key) in [
+        (vec!["steady", "tribometer"], "contact.pairs"),
+        (vec!["run", "tribometer", "--vtk"], "ParaView"),
+    ] {
+        let mut args = args;
+        let refused = dir.join("refused");
+        args.extend(["--out", refused.to_str().unwrap()]);
+        let result = wearfem(&args);
+        assert_eq!(result.status.code(), Some(2), "{args:?}");
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert!(stderr.contains(key), "{args:?}: {stderr}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

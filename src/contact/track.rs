@@ -109,13 +109,17 @@ impl Track {
 /// so the trapezoidal rule between those kinks is exact.
 pub fn swept_overlap(a: [f64; 2], b: [f64; 2], s: [f64; 2]) -> f64 {
     let overlap = |t: f64| ((a[1] - t).min(b[1]) - (a[0] - t).max(b[0])).max(0.0);
-    let mut knots = vec![s[0], s[1]];
+    // At most six knots, on the stack: this runs for every point, position and track cell.
+    let mut knots = [s[0], s[1], 0.0, 0.0, 0.0, 0.0];
+    let mut count = 2;
     for k in [a[1] - b[1], a[0] - b[0], a[1] - b[0], a[0] - b[1]] {
         if k > s[0] && k < s[1] {
-            knots.push(k);
+            knots[count] = k;
+            count += 1;
         }
     }
-    knots.sort_by(f64::total_cmp);
+    let knots = &mut knots[..count];
+    knots.sort_unstable_by(f64::total_cmp);
     knots
         .windows(2)
         .map(|w| 0.5 * (w[1] - w[0]) * (overlap(w[0]) + overlap(w[1])))

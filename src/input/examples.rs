@@ -43,6 +43,7 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         include_str!("../../examples/brake-independent.toml"),
     ),
     ("pin", include_str!("../../examples/pin.toml")),
+    ("tribometer", include_str!("../../examples/tribometer.toml")),
 ];
 
 /// The text of built-in example `name`.

@@ -380,6 +380,7 @@ pub fn steady_with_heat(
     ),
     JobError,
 > {
+    super::sliding::require_fixed_pairs(problem, "the steady state")?;
     let spec = problem
         .spec
         .wear
@@ -442,6 +443,7 @@ pub fn steady_by(
     method: crate::paper_steady::SteadyMethod,
     settings: crate::paper_steady::MethodSettings,
 ) -> Result<(crate::paper_steady::MethodOutcome, CondensedContact, f64), JobError> {
+    super::sliding::require_fixed_pairs(problem, "the steady state")?;
     let spec = problem
         .spec
         .wear

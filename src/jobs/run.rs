@@ -98,6 +98,7 @@ pub fn wear_until(
     steps: Option<usize>,
     on_step: impl FnMut(&crate::wear::StepRecord) -> ControlFlow<()>,
 ) -> Result<WearRun, JobError> {
+    super::sliding::require_fixed_pairs(problem, "this run (the fixed pairs' integrator)")?;
     let spec = problem
         .spec
         .wear

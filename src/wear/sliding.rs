@@ -21,32 +21,35 @@
 //! The solve of step 2 is implicit in the wear of its own interval, as the fixed pairs'
 //! step is in its half period: the wear that the interval adds under point i, linear in the
 //! pressure for b = 1, is a compliance c_i in series with the bodies'
-//! ([`ContactSolver::set_compliance`]). Body 1's part is exact; body 2's part is what the
-//! point deposits under itself, all of it while the interval is shorter than the point's
-//! share of the edge and that share's fraction of it when longer. For b ≠ 1 the compliance
+//! ([`ContactSolver::set_compliance`]). Body 1's part is exact. Body 2's part is lumped:
+//! the track under point i deepens over the interval by what every point passing over it
+//! deposits, β̃₂ pᵇ S_j where the pressure varies little over the interval, and the
+//! compliance takes all of it (its row sum), not only point i's own deposit under itself
+//! (the diagonal, the share's width over |Δs_j| once the interval is longer than the share).
+//! With the diagonal alone the rest came explicitly and k times: the tribometer example's
+//! pressures at the stroke's ends jumped from point to point at k = 100. For b ≠ 1 the compliance
 //! is the secant p^(b−1) of the pressure at the same position in the last half period that
 //! visited it (none at the first visit): it only weights how implicit the step is, since the
 //! wear added is that of the solved pressure. So large k stays stable on stiff meshes, as
 //! for fixed pairs.
 //!
-//! # Looking ahead to the cycle's end
+//! # Looking ahead within the cycle
 //!
 //! A step of k half periods wears k times what one does, so the shape a position meets
 //! depends on where in the cycle it comes: under the stroke's first positions the cycle's
 //! wear is still to come, under its last ones it is done. With k = 10 that spread is ten
-//! times the physical one, and the periodic state the scheme settles in moved with k
+//! times the physical one, and the periodic state the scheme settled in moved with k
 //! (punch-b40 with a vanishing stroke: 0.4 % of the peak off the fixed pairs' steady
-//! pressures). The fixed pairs' scheme lets its first half period see the wear its second
-//! half adds; here, once a cycle is complete, every position sees the wear the rest of the
-//! cycle adds (its own interval included), linearised about the last cycle:
-//! k R_i + k D_i (p_i − p̂_i), with R_i the rest of the last cycle's wear under point i per
-//! half period of extrapolation (the last cycle's wear less what this cycle has added so
-//! far), D_i the rest's diagonal (the compliance above, summed over the remaining
-//! intervals) and p̂_i the pressure of this position's last visit. The term in p_i is
-//! implicit, a compliance; the rest is known. Taken explicitly as a whole, the lagged wear
-//! of seven eighths of a cycle made the punch's pressures oscillate by half their peak at
-//! k = 10. In a periodic state p = p̂ and every position meets the cycle's end shape, as
-//! with fixed pairs, and a vanishing stroke gives the fixed pairs' results.
+//! pressures). So each position's solve also holds the rest of its half period, the
+//! intervals still to come, as if they wore at its own pressure (a larger compliance, summed
+//! over them); and on the way out ('+' steps), once a cycle is complete, it sees the wear of
+//! the last '−' half period under it, k times, as the fixed pairs' first half period does.
+//! With a vanishing stroke the positions are alike and this is the fixed pairs' scheme.
+//!
+//! Taking more of the cycle from the last one (the rest of the own half period, lagged and
+//! corrected by the difference of the positions' pressures) made the tribometer example's
+//! pressures oscillate from point to point at k = 100: that difference, large where the
+//! slider runs onto the ends of its track, was taken explicitly and k times.
 
 use super::{ScheduleEntry, StopReason, WearLaw};
 use crate::complementarity::{ContactSolution, ContactSolver, Direction, Status};
@@ -167,10 +170,8 @@ struct State {
     done: Wear,
     /// The wear of the step under way.
     step: Wear,
-    /// The wear of this cycle's completed steps, per unit k, and of the last whole cycle.
-    cycle: [Wear; 2],
-    /// Whether a whole cycle has been completed (and `cycle[1]` holds it).
-    ahead: bool,
+    /// The last '−' half period's wear per unit k, once one is complete.
+    back: Option<Wear>,
     /// The pressure at each position in each direction, last visit ('+', '−').
     last: [Vec<Vec<f64>>; 2],
 }
@@ -192,8 +193,7 @@ pub fn run(
     let mut state = State {
         done: unworn.clone(),
         step: unworn.clone(),
-        cycle: [unworn.clone(), unworn.clone()],
-        ahead: false,
+        back: None,
         last: [vec![vec![]; m], vec![vec![]; m]],
     };
     let mut history = SlidingHistory {
@@ -231,15 +231,9 @@ pub fn run(
             let s = contact.stroke.positions[j];
             let kf = k as f64;
             let last = &state.last[d][j];
-            // The intervals whose wear the solve holds implicitly: its own, and once a cycle
-            // is complete the rest of the cycle (module docs).
-            let rest = if state.ahead {
-                let own_half = if forward { j..m } else { 0..j + 1 };
-                let other_half = if forward { 0..m } else { 0..0 };
-                [own_half, other_half]
-            } else {
-                [j..j + 1, 0..0]
-            };
+            // The intervals whose wear the solve holds implicitly: its own and the rest of
+            // its half period (module docs).
+            let rest = if forward { j..m } else { 0..j + 1 };
             implicit_compliance(
                 settings,
                 contact,
@@ -253,12 +247,8 @@ pub fn run(
             for i in 0..n {
                 let x = contact.readings[i] - s;
                 gap[i] = c.points.initial_gap[i] + state.done.at(i, x) + state.step.at(i, x);
-                if state.ahead {
-                    let area = c.points.weight[i] * c.thickness;
-                    let held = compliance[i] * last.get(i).map_or(0.0, |p| p * area);
-                    gap[i] += kf * (state.cycle[1].at(i, x) - state.cycle[0].at(i, x))
-                        - state.step.at(i, x)
-                        - held;
+                if let (true, Some(back)) = (forward, &state.back) {
+                    gap[i] += kf * back.at(i, x);
                 }
             }
             solvers[j].set_compliance(&compliance);
@@ -295,11 +285,10 @@ pub fn run(
             break;
         }
         state.done.add(1.0, &state.step);
-        state.cycle[0].add(1.0 / k as f64, &state.step);
         if !forward {
-            state.cycle.swap(0, 1);
-            state.cycle[0].zero();
-            state.ahead = true;
+            let back = state.back.get_or_insert_with(|| state.step.clone());
+            back.zero();
+            back.add(1.0 / k as f64, &state.step);
         }
         half_periods += k;
         let last_position = *order.last().unwrap_or(&0);
@@ -370,9 +359,8 @@ fn interval_sliding(settings: &SlidingSettings, m: usize) -> Vec<IntervalSliding
 }
 
 /// The wear compliance c_i (mm/N) that position j's solve holds: the depth the intervals
-/// `rest` (ranges of positions, in either half period: the sliding integrals are the same
-/// both ways) add under point i per unit contact force there, k half periods of each (see
-/// the module's docs).
+/// `rest` (a range of positions) add under point i per unit contact force there, k half
+/// periods of each (see the module's docs).
 #[allow(clippy::too_many_arguments)]
 fn implicit_compliance(
     settings: &SlidingSettings,
@@ -380,22 +368,15 @@ fn implicit_compliance(
     j: usize,
     k: usize,
     sliding: &[IntervalSliding],
-    rest: [std::ops::Range<usize>; 2],
+    rest: std::ops::Range<usize>,
     last: &[f64],
     out: &mut [f64],
 ) {
     let c = &contact.contacts[j];
     let peak = last.iter().fold(0.0f64, |a, &b| a.max(b));
-    let length = sliding[j].length;
-    let summed: [f64; 2] = std::array::from_fn(|body| {
-        rest.iter()
-            .flat_map(|r| r.clone())
-            .map(|q| sliding[q].per_body[body])
-            .sum()
-    });
+    let summed: [f64; 2] =
+        std::array::from_fn(|body| rest.clone().map(|q| sliding[q].per_body[body]).sum());
     for (i, value) in out.iter_mut().enumerate() {
-        let share = contact.cells[i + 1] - contact.cells[i];
-        let under_itself = [1.0, (share / length).min(1.0)];
         let mut depth_per_pressure = 0.0;
         for body in 0..2 {
             let Some(law) = settings.laws[body] else {
@@ -408,7 +389,7 @@ fn implicit_compliance(
             } else {
                 last[i].max(1e-3 * peak).powf(law.b - 1.0)
             };
-            depth_per_pressure += law.beta * secant * summed[body] * under_itself[body];
+            depth_per_pressure += law.beta * secant * summed[body];
         }
         *value = k as f64 * depth_per_pressure / (c.points.weight[i] * c.thickness);
     }
