@@ -33,7 +33,7 @@ pub use mortar::SurfaceMisfit;
 use mortar::{mortar_traces, ChainElement};
 use plate::plate_modes;
 pub use resolution::{CoarseZone, PointResolution, SizeJump, UnmatchedLine};
-pub use spec::{check_settings, CircleShape, ContactSpec, PlateSpec};
+pub use spec::{check_settings, CircleShape, ContactSpec, PlateSpec, MAX_POSITIONS};
 pub use zone::EdgeEnd;
 
 /// Contact points of body 1 with their partners on body 2.

@@ -145,7 +145,7 @@ pub fn dual_cells(x: &[f64], weight: &[f64]) -> Vec<f64> {
 
 /// Positions per half period when `contact.positions` is not given: offset steps of at most
 /// 1/16 of body 1's contact edge (x extent `edge_length`, mm), at least 4, at most
-/// [`super::spec::MAX_POSITIONS`].
+/// [`super::MAX_POSITIONS`].
 pub fn default_positions(stroke: f64, edge_length: f64) -> usize {
     let steps = (16.0 * stroke / edge_length).ceil() as usize;
     steps.clamp(4, super::spec::MAX_POSITIONS)

@@ -244,11 +244,11 @@ pub fn run(
                 last,
                 &mut compliance,
             );
-            for i in 0..n {
+            for (i, g) in gap.iter_mut().enumerate() {
                 let x = contact.readings[i] - s;
-                gap[i] = c.points.initial_gap[i] + state.done.at(i, x) + state.step.at(i, x);
+                *g = c.points.initial_gap[i] + state.done.at(i, x) + state.step.at(i, x);
                 if let (true, Some(back)) = (forward, &state.back) {
-                    gap[i] += kf * back.at(i, x);
+                    *g += kf * back.at(i, x);
                 }
             }
             solvers[j].set_compliance(&compliance);
@@ -378,8 +378,8 @@ fn implicit_compliance(
         std::array::from_fn(|body| rest.clone().map(|q| sliding[q].per_body[body]).sum());
     for (i, value) in out.iter_mut().enumerate() {
         let mut depth_per_pressure = 0.0;
-        for body in 0..2 {
-            let Some(law) = settings.laws[body] else {
+        for (law, summed) in settings.laws.iter().zip(summed) {
+            let Some(law) = law else {
                 continue;
             };
             let secant = if law.b == 1.0 {
@@ -389,7 +389,7 @@ fn implicit_compliance(
             } else {
                 last[i].max(1e-3 * peak).powf(law.b - 1.0)
             };
-            depth_per_pressure += law.beta * secant * summed[body];
+            depth_per_pressure += law.beta * secant * summed;
         }
         *value = k as f64 * depth_per_pressure / (c.points.weight[i] * c.thickness);
     }
