@@ -173,7 +173,7 @@ fn chain_edge(body: &ElasticBody, edges: &[(usize, usize)]) -> Vec<(usize, usize
 
 /// Whether the element edges `edges` of `body` close on themselves: every vertex they touch
 /// is shared by two of them, so the chain has no end.
-fn closed_loop(body: &ElasticBody, edges: &[(usize, usize)]) -> bool {
+pub(crate) fn closed_loop(body: &ElasticBody, edges: &[(usize, usize)]) -> bool {
     let mut touches: std::collections::HashMap<usize, usize> = Default::default();
     for &(e, l) in edges {
         let (a, b) = crate::mesh::EDGE_ENDPOINTS[l];
@@ -395,6 +395,21 @@ fn body2_traces(
     }
 }
 
+/// The contact points with their normals and tangents turned back by `turn` (radians): the
+/// directions in body 2's frame of assembly (see [`CondensedContact::condense`]).
+fn body2_frame(points: &ContactPoints, turn: f64) -> ContactPoints {
+    let mut frame = points.clone();
+    if turn != 0.0 {
+        let (sin, cos) = (-turn).sin_cos();
+        let back = |v: Point| [cos * v[0] - sin * v[1], sin * v[0] + cos * v[1]];
+        for (n, t) in frame.normal.iter_mut().zip(frame.tangent.iter_mut()) {
+            *n = back(*n);
+            *t = back(*t);
+        }
+    }
+    frame
+}
+
 impl CondensedContact {
     /// Build both bodies, condense them onto the contact points and evaluate the plate load.
     /// Returns the condensed problem and the two factorised bodies (for post-processing).
@@ -423,17 +438,21 @@ impl CondensedContact {
         body1: &ElasticBody,
         body2: &ElasticBody,
     ) -> Result<CondensedContact, ProblemError> {
-        Self::condense(problem, body1, body2, None)
+        Self::condense(problem, body1, body2, None, 0.0)
     }
 
     /// [`CondensedContact::from_bodies`], with the flexibilities taken from `known` where it
     /// holds them (sliding pairs: body 1's part, the same at every position, and body 2's
-    /// flexibility on its track's dofs).
+    /// flexibility on its track's dofs). `body2_turn` (radians, counter-clockwise) is the
+    /// angle by which body 2's mesh has been turned from the one its stiffness was assembled
+    /// on: its dofs are components in the frame it was assembled in, so its displacement
+    /// along a direction d of the turned body is its displacement along d turned back.
     pub(crate) fn condense(
         problem: &Problem,
         body1: &ElasticBody,
         body2: &ElasticBody,
         known: Option<&KnownFlexibility>,
+        body2_turn: f64,
     ) -> Result<CondensedContact, ProblemError> {
         let (c, b1, b2) = spec::contact_section(problem)?;
         let plate = problem.spec.plate.clone();
@@ -496,7 +515,13 @@ impl CondensedContact {
         // and prescribed support displacements move the contact points before any contact
         // force acts: their normal displacements enter the gap, d = u_n⁽²⁾ − u_n⁽¹⁾ + g.
         let plate_edge: Vec<&str> = plate.iter().map(|p| p.edge.as_str()).collect();
-        for (b, body, traces, sign) in [(b1, body1, &traces1, -1.0), (b2, body2, &traces2, 1.0)] {
+        let frame2 = body2_frame(&points, body2_turn);
+        let frames = [&points.normal, &frame2.normal];
+        for (k, (b, body, traces, sign)) in
+            [(b1, body1, &traces1, -1.0), (b2, body2, &traces2, 1.0)]
+                .into_iter()
+                .enumerate()
+        {
             let load = problem.load_vector(b, body, &plate_edge)?;
             if load.iter().any(|f| *f != 0.0) || body.has_prescribed() {
                 let u = body
@@ -504,7 +529,7 @@ impl CondensedContact {
                     .map_err(|e| problem.error("bodies", e.to_string()))?
                     .boundary;
                 for (i, tr) in traces.iter().enumerate() {
-                    let n = points.normal[i];
+                    let n = frames[k][i];
                     let un: f64 = tr
                         .iter()
                         .map(|&(g, coef)| coef * (u[g[0]] * n[0] + u[g[1]] * n[1]))
@@ -520,7 +545,7 @@ impl CondensedContact {
         // kinks body 2's trace under a dual basis that cannot follow it (red team F: a ball in
         // a cup, body 2 finer than body 1 but unaligned, dipped 5.8 % of the peak at body 1's
         // vertices, in silence).
-        let unmatched_lines = if c.discretisation == "collocation" || !c.align_target_mesh {
+        let unmatched_lines = if c.discretisation == "collocation" || !c.aligns_target_mesh() {
             resolution::unmatched_lines(body1, &chain, body2, &edge2)
         } else {
             Vec::new()
@@ -535,9 +560,9 @@ impl CondensedContact {
             }
         };
         let from_known =
-            known.is_some_and(|k| k.body2.add_to(&traces2, &points, &mut a_nn, &mut a_nt));
+            known.is_some_and(|k| k.body2.add_to(&traces2, &frame2, &mut a_nn, &mut a_nt));
         if !from_known {
-            add_flexibility(problem, body2, &traces2, &points, &mut a_nn, &mut a_nt)?;
+            add_flexibility(problem, body2, &traces2, &frame2, &mut a_nn, &mut a_nt)?;
         }
         let (rigid_modes, rigid_names, plate_load, plate_resultant) = match &plate {
             None => (vec![], vec![], vec![], ([0.0; 2], 0.0)),

@@ -366,10 +366,7 @@ fn the_tribometer_runs_through_the_binary_and_other_jobs_refuse_sliding_pairs() 
             assert_eq!(cells.len(), columns, "{file}: {line}");
             for c in cells {
                 let number = c.parse::<f64>().map(f64::is_finite).unwrap_or(false);
-                assert!(
-                    number || ["+", "-", "−"].contains(&c),
-                    "{file}: {c}"
-                );
+                assert!(number || ["+", "-", "−"].contains(&c), "{file}: {c}");
             }
         }
     }
@@ -397,4 +394,151 @@ fn the_tribometer_runs_through_the_binary_and_other_jobs_refuse_sliding_pairs() 
         assert!(stderr.contains(key), "{args:?}: {stderr}");
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A steel block pressed on a steel ring (R = 20 mm about (0, −20), 64 elements round, its hub
+/// held) turning under it at 100 mm/s; `laws` is the `[wear]` section's laws.
+fn block_on_ring(laws: &str) -> String {
+    RING.replace("WEAR_LAWS", laws)
+}
+
+const RING: &str = r#"title = "a block on a rotating ring"
+[analysis]
+kind = "plane_strain"
+thickness = 10.0
+p = 4
+[materials.steel]
+young = 2.1e5
+poisson = 0.3
+[[bodies]]
+name = "block"
+[[bodies.blocks]]
+corners = [[-3.0, 0.0], [3.0, 0.0], [3.0, 4.0], [-3.0, 4.0]]
+u = 30
+v = [0.0, 0.1, 0.3, 1.0]
+material = "steel"
+names = { bottom = "contact", top = "top" }
+[[bodies.tractions]]
+edge = "top"
+normal = 16.666666666666668
+[[bodies]]
+name = "ring"
+[[bodies.blocks]]
+corners = [[10.0, -20.0], [20.0, -20.0], [0.0, 0.0], [0.0, -10.0]]
+arcs = [{ edge = 1, center = [0.0, -20.0] }, { edge = 3, center = [0.0, -20.0] }]
+u = [0.0, 0.5, 0.8, 0.95, 1.0]
+v = 16
+material = "steel"
+names = { right = "rim", left = "hub" }
+[[bodies.blocks]]
+corners = [[0.0, -10.0], [0.0, 0.0], [-20.0, -20.0], [-10.0, -20.0]]
+arcs = [{ edge = 1, center = [0.0, -20.0] }, { edge = 3, center = [0.0, -20.0] }]
+u = [0.0, 0.5, 0.8, 0.95, 1.0]
+v = 16
+material = "steel"
+names = { right = "rim", left = "hub" }
+[[bodies.blocks]]
+corners = [[-10.0, -20.0], [-20.0, -20.0], [0.0, -40.0], [0.0, -30.0]]
+arcs = [{ edge = 1, center = [0.0, -20.0] }, { edge = 3, center = [0.0, -20.0] }]
+u = [0.0, 0.5, 0.8, 0.95, 1.0]
+v = 16
+material = "steel"
+names = { right = "rim", left = "hub" }
+[[bodies.blocks]]
+corners = [[0.0, -30.0], [0.0, -40.0], [20.0, -20.0], [10.0, -20.0]]
+arcs = [{ edge = 1, center = [0.0, -20.0] }, { edge = 3, center = [0.0, -20.0] }]
+u = [0.0, 0.5, 0.8, 0.95, 1.0]
+v = 16
+material = "steel"
+names = { right = "rim", left = "hub" }
+[[bodies.supports]]
+edge = "hub"
+fix = ["x", "z"]
+[contact]
+body = "block"
+edge = "contact"
+target_body = "ring"
+target_edge = "rim"
+friction = 0.3
+pairs = "sliding"
+[plate]
+edge = "top"
+motion = "vertical"
+[wear]
+WEAR_LAWS
+sliding = "monotonic"
+speed = 100.0
+step_time = 1.2566370614359172
+steps = 5
+extrapolation = [{ until = 2, k = 1 }, { k = 10 }]
+"#;
+
+#[test]
+fn a_ring_turning_under_a_block_wears_evenly_all_round() {
+    // Only the ring wears: every material point of its rim passes under the whole contact
+    // once a turn, so after s of sliding its depth is β̃₂ (F/t) s / (2πR) all round, whatever
+    // the pressure's shape (∫ p dx = F/t). The positions (one per element of the rim) are
+    // alike up to the turn, so the evenness holds to round-off; 1e-6 is the issue's bound.
+    let run = run(&block_on_ring("body2 = { beta = 1.0e-6 }"));
+    let turns = run.history.steps.last().unwrap().half_period as f64;
+    let depth = 1.0e-6 * LOAD_PER_THICKNESS * turns;
+    for (k, w) in run.history.track.wear.iter().enumerate() {
+        assert!(
+            (w - depth).abs() < 1e-6 * depth,
+            "cell {k}: {w} against {depth}"
+        );
+    }
+    assert!(matches!(
+        run.contact.shape,
+        wearfem::contact::track::TrackShape::Ring { radius, .. } if (radius - 20.0).abs() < 1e-9
+    ));
+}
+
+#[test]
+fn block_and_ring_each_wear_archards_volume() {
+    let run = run(&block_on_ring(
+        "body1 = { beta = 3.0e-7 }\nbody2 = { beta = 1.0e-6 }",
+    ));
+    let circumference = std::f64::consts::TAU * 20.0;
+    for step in &run.history.steps {
+        let s = circumference * step.half_period as f64;
+        for (body, beta) in [(0, 3.0e-7), (1, 1.0e-6)] {
+            let expected = beta * LOAD_PER_THICKNESS * s;
+            let relative = (step.worn_area[body] - expected).abs() / expected;
+            // As for the straight track: the equilibrium residual and round-off.
+            assert!(
+                relative < 1e-6,
+                "step {}: body {}: {relative:.2e}",
+                step.step,
+                body + 1
+            );
+        }
+    }
+}
+
+#[test]
+fn a_closed_track_must_be_a_circle_turned_once_a_step() {
+    let good = block_on_ring("body2 = { beta = 1.0e-6 }");
+    let refused = |text: &str, key: &str| {
+        let problem = Problem::from_toml(text, "bad.toml").unwrap();
+        let error = sliding::wear(&problem, None)
+            .err()
+            .expect("refused")
+            .to_string();
+        assert!(error.contains(key), "{key}: {error}");
+    };
+    // A step unit must be one turn: 2π × 20 mm at 100 mm/s.
+    refused(
+        &good.replace("step_time = 1.2566370614359172", "step_time = 1.0"),
+        "wear.step_time",
+    );
+    // The ring's first quarter made square: its rim is still closed, but not a circle.
+    refused(
+        &good.replacen(
+            "arcs = [{ edge = 1, center = [0.0, -20.0] }, { edge = 3, center = [0.0, -20.0] }]",
+            "arcs = [{ edge = 3, center = [0.0, -20.0] }]",
+            1,
+        ),
+        "contact.target_edge",
+    );
 }

@@ -72,6 +72,16 @@ fn active_set() -> String {
 fn yes() -> bool {
     true
 }
+impl ContactSpec {
+    /// Whether body 2's mesh gets lines under body 1's element ends: with fixed pairs, as
+    /// `align_target_mesh` says; never with sliding pairs, where body 2 moves under body 1
+    /// (lines under its ends at rest would only break the track's evenness: on a ring, the
+    /// positions' equality, and with it the evenness of its wear).
+    pub fn aligns_target_mesh(&self) -> bool {
+        self.align_target_mesh && self.pairs != "sliding"
+    }
+}
+
 fn fixed() -> String {
     "fixed".into()
 }
@@ -177,12 +187,6 @@ fn check_sliding(problem: &Problem, c: &ContactSpec) -> Result<(), ProblemError>
     let Some(w) = &problem.spec.wear else {
         return Ok(());
     };
-    if w.sliding != "reciprocating" {
-        return Err(needs_fixed(
-            "wear.sliding",
-            "monotonic sliding moves body 2 past body 1 for good and needs a closed track (a ring or a disc), which is not built yet; use fixed pairs (the default) for monotonic sliding",
-        ));
-    }
     if w.adaptive.is_some() {
         return Err(needs_fixed(
             "wear.adaptive",

@@ -36,6 +36,7 @@
 
 use super::CondensedContact;
 use crate::elasticity::ElasticBody;
+use crate::geometry::Point;
 use crate::problem::{Problem, ProblemError};
 
 /// Body 2's worn profile along its track, in cells of equal width.
@@ -47,6 +48,8 @@ pub struct Track {
     pub cell: f64,
     /// Body 2's wear depth in each cell, mm.
     pub wear: Vec<f64>,
+    /// A closed track's length (a ring's circumference, mm): X is then taken modulo it.
+    pub period: Option<f64>,
 }
 
 impl Track {
@@ -57,6 +60,24 @@ impl Track {
             start,
             cell: (end - start) / count as f64,
             wear: vec![0.0; count],
+            period: None,
+        }
+    }
+
+    /// A closed track of length `period` (mm) from X = 0, in cells of at most `cell` mm.
+    pub fn closed(period: f64, cell: f64) -> Track {
+        Track {
+            period: Some(period),
+            ..Track::new(0.0, period, cell)
+        }
+    }
+
+    /// Cell `k` of the unwrapped numbering (a closed track's cells repeat), if it exists.
+    fn slot(&self, k: i64) -> Option<usize> {
+        let n = self.wear.len() as i64;
+        match self.period {
+            Some(_) => Some(k.rem_euclid(n) as usize),
+            None => (0..n).contains(&k).then_some(k as usize),
         }
     }
 
@@ -67,10 +88,18 @@ impl Track {
             .collect()
     }
 
-    /// The wear at X (mm), linear between cell centres and constant beyond the outer ones.
+    /// The wear at X (mm), linear between cell centres and constant beyond the outer ones
+    /// (a closed track goes round).
     pub fn at(&self, x: f64) -> f64 {
         let n = self.wear.len();
         let u = (x - self.start) / self.cell - 0.5;
+        if self.period.is_some() {
+            let k = u.floor();
+            let f = u - k;
+            let k = k as i64;
+            let (a, b) = (self.slot(k).unwrap_or(0), self.slot(k + 1).unwrap_or(0));
+            return (1.0 - f) * self.wear[a] + f * self.wear[b];
+        }
         if u <= 0.0 {
             return self.wear[0];
         }
@@ -87,13 +116,15 @@ impl Track {
     /// of offset gains `rate` × ℓ (`rate`, mm of depth per mm of sliding).
     pub fn sweep(&mut self, from: f64, to: f64, shift: [f64; 2], rate: f64) {
         let (s0, s1) = (shift[0].min(shift[1]), shift[0].max(shift[1]));
-        let first = (((from - s1 - self.start) / self.cell).floor().max(0.0)) as usize;
-        let last =
-            (((to - s0 - self.start) / self.cell).ceil().max(0.0) as usize).min(self.wear.len());
+        let first = ((from - s1 - self.start) / self.cell).floor() as i64;
+        let last = ((to - s0 - self.start) / self.cell).ceil() as i64;
         for k in first..last {
+            let Some(slot) = self.slot(k) else {
+                continue;
+            };
             let x0 = self.start + k as f64 * self.cell;
             let collected = swept_overlap([from, to], [x0, x0 + self.cell], [s0, s1]);
-            self.wear[k] += rate * collected / self.cell;
+            self.wear[slot] += rate * collected / self.cell;
         }
     }
 
@@ -170,6 +201,111 @@ impl Stroke {
         let positions = ends.windows(2).map(|e| 0.5 * (e[0] + e[1])).collect();
         Stroke { ends, positions }
     }
+
+    /// Once round a closed track of length `period` (mm) in `count` equal intervals, in
+    /// `direction` (±1).
+    pub fn around(period: f64, direction: f64, count: usize) -> Stroke {
+        let ends: Vec<f64> = (0..=count)
+            .map(|j| direction * period * j as f64 / count as f64)
+            .collect();
+        let positions = ends.windows(2).map(|e| 0.5 * (e[0] + e[1])).collect();
+        Stroke { ends, positions }
+    }
+}
+
+/// The shape of body 2's track.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TrackShape {
+    /// Straight along x: body 2 is translated by the offset.
+    Straight,
+    /// A whole circle (a ring, a disc, a drum under body 1): body 2 is turned about its centre,
+    /// clockwise for a positive offset (its top then moves towards +x), and the track
+    /// coordinate is the arc length, clockwise from the top.
+    Ring {
+        /// The circle's centre [x, z], mm.
+        center: Point,
+        /// Its radius, mm.
+        radius: f64,
+    },
+}
+
+impl TrackShape {
+    /// The track coordinate (mm) of the point of body 2 under body 1's x, body 2 at rest.
+    pub fn coordinate(&self, x: f64) -> f64 {
+        match *self {
+            TrackShape::Straight => x,
+            TrackShape::Ring { center, radius } => {
+                radius * ((x - center[0]) / radius).clamp(-1.0, 1.0).asin()
+            }
+        }
+    }
+
+    /// A closed track's length (mm).
+    pub fn period(&self) -> Option<f64> {
+        match *self {
+            TrackShape::Straight => None,
+            TrackShape::Ring { radius, .. } => Some(std::f64::consts::TAU * radius),
+        }
+    }
+
+    /// Body 2's mesh at offset `s` (mm), and the angle it was turned by (radians).
+    fn moved(&self, at_rest: &crate::mesh::Mesh, s: f64) -> (crate::mesh::Mesh, f64) {
+        match *self {
+            TrackShape::Straight => (at_rest.translated([s, 0.0]), 0.0),
+            TrackShape::Ring { center, radius } => {
+                let turn = -s / radius;
+                (at_rest.rotated(center, turn), turn)
+            }
+        }
+    }
+}
+
+/// The shape of body 2's contact edge as a track: a whole circle (every element edge's ends and
+/// middle at one distance from one centre, to 1e-9 of it) or, when the edge has two ends,
+/// straight.
+pub fn track_shape(problem: &Problem, body2: &ElasticBody) -> Result<TrackShape, ProblemError> {
+    let c = problem.spec.contact.as_ref().expect("checked");
+    let b2 = problem
+        .body_index(&c.target_body)
+        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
+    let edge = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?;
+    if !super::closed_loop(body2, edge) {
+        return Ok(TrackShape::Straight);
+    }
+    let at = |k: usize, t: f64| body2.mesh.point_on_edge(edge[k].0, edge[k].1, t);
+    let center = circumcentre(at(0, -1.0), at(0, 0.0), at(0, 1.0));
+    let radius = center.map_or(0.0, |c| dist(c, at(0, 0.0)));
+    let not_a_circle = || {
+        problem.error(
+            "contact.target_edge",
+            format!("\"{}\" is closed, so body 2 would turn under body 1, but it is not a whole circle (its element edges do not all lie at one distance from one centre); a closed track must be a circle", c.target_edge),
+        )
+    };
+    let center = center.ok_or_else(not_a_circle)?;
+    for k in 0..edge.len() {
+        for t in [-1.0, 0.0, 1.0] {
+            if (dist(center, at(k, t)) - radius).abs() > 1e-9 * radius {
+                return Err(not_a_circle());
+            }
+        }
+    }
+    Ok(TrackShape::Ring { center, radius })
+}
+
+fn dist(a: Point, b: Point) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// The centre of the circle through three points (None if they are in a line).
+fn circumcentre(a: Point, b: Point, c: Point) -> Option<Point> {
+    let d = 2.0 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) + c[0] * (a[1] - b[1]));
+    if d.abs() < 1e-300 {
+        return None;
+    }
+    let sq = |p: Point| p[0] * p[0] + p[1] * p[1];
+    let x = (sq(a) * (b[1] - c[1]) + sq(b) * (c[1] - a[1]) + sq(c) * (a[1] - b[1])) / d;
+    let z = (sq(a) * (c[0] - b[0]) + sq(b) * (a[0] - c[0]) + sq(c) * (b[0] - a[0])) / d;
+    Some([x, z])
 }
 
 /// Every position's condensed contact problem: body 2's mesh translated by each offset of
@@ -179,11 +315,12 @@ pub fn position_contacts(
     body1: &ElasticBody,
     body2: &mut ElasticBody,
     stroke: &Stroke,
+    shape: TrackShape,
 ) -> Result<Vec<CondensedContact>, ProblemError> {
     let at_rest = body2.mesh.clone();
     let mut contacts = Vec::with_capacity(stroke.positions.len());
     let mut failure = None;
-    let known = match known_flexibility(problem, body1, body2, stroke) {
+    let known = match known_flexibility(problem, body1, body2, stroke, shape) {
         Ok(k) => k,
         Err(e) => {
             body2.mesh = at_rest;
@@ -191,8 +328,9 @@ pub fn position_contacts(
         }
     };
     for &s in &stroke.positions {
-        body2.mesh = at_rest.translated([s, 0.0]);
-        match CondensedContact::condense(problem, body1, body2, known.as_ref()) {
+        let (mesh, turn) = shape.moved(&at_rest, s);
+        body2.mesh = mesh;
+        match CondensedContact::condense(problem, body1, body2, known.as_ref(), turn) {
             Ok(c) => contacts.push(c),
             Err(e) => {
                 failure = Some((s, e));
@@ -223,38 +361,64 @@ pub struct SlidingContact {
     pub cells: Vec<f64>,
     /// Where each contact point reads the track at offset 0: the middle of its share, mm.
     pub readings: Vec<f64>,
+    /// The track's shape.
+    pub shape: TrackShape,
 }
 
 impl SlidingContact {
-    /// Build every position's condensed contact for the amplitude u₀ (mm), the first sliding
-    /// direction (±1) and `count` positions per half period.
+    /// Build every position's condensed contact: `stroke` (reciprocating: the amplitude u₀,
+    /// mm; monotonic, on a closed track only: None, once round) in the first sliding
+    /// direction (±1), `count` positions per half period (per turn).
     pub fn build(
         problem: &Problem,
         body1: &ElasticBody,
         body2: &mut ElasticBody,
-        amplitude: f64,
+        stroke: Option<f64>,
         direction: f64,
         count: usize,
     ) -> Result<SlidingContact, ProblemError> {
-        let stroke = Stroke::new(amplitude, direction, count);
-        let contacts = position_contacts(problem, body1, body2, &stroke)?;
-        let points = &contacts[0].points;
-        let x: Vec<f64> = points.x.iter().map(|p| p[0]).collect();
-        if x.len() < 2 || points.normal.iter().any(|n| n[0].abs() > 1e-9) {
-            // The track is straight along x; an inclined or curved contact edge of body 1
-            // would meet it at other points than a shift along x brings.
+        let shape = track_shape(problem, body2)?;
+        let (points, _) = CondensedContact::body1_points(problem, body1)?;
+        if points.x.len() < 2 || points.normal.iter().any(|n| n[0].abs() > 1e-9) {
+            // Body 2 moves along x under body 1's points; an inclined or curved contact edge
+            // of body 1 would meet it at other points than that motion brings.
             return Err(problem.error(
                 "contact.pairs",
-                "\"sliding\" needs body 1's contact edge straight and horizontal (a straight track along x); model a rounded slider by contact.initial_shape",
+                "\"sliding\" needs body 1's contact edge straight and horizontal; model a rounded slider by contact.initial_shape",
             ));
         }
-        let cells = dual_cells(&x, &points.weight);
-        let readings = cells.windows(2).map(|c| 0.5 * (c[0] + c[1])).collect();
+        let stroke = match (stroke, shape.period()) {
+            (Some(amplitude), _) => Stroke::new(amplitude, direction, count),
+            (None, Some(period)) => Stroke::around(period, direction, count),
+            (None, None) => {
+                return Err(problem.error(
+                    "wear.sliding",
+                    "monotonic sliding pairs need a closed track: body 2's contact edge a whole circle (a ring, a disc) that turns under body 1; a straight track would run out",
+                ))
+            }
+        };
+        if let TrackShape::Ring { center, radius } = shape {
+            if let Some(p) = points.x.iter().find(|p| (p[0] - center[0]).abs() >= radius) {
+                return Err(problem.error(
+                    "contact.edge",
+                    format!("body 1's contact point ({:.4}, {:.4}) lies beyond the ring's width (centre x = {:.4}, radius {radius:.4} mm): it has nothing of the ring under it", p[0], p[1], center[0]),
+                ));
+            }
+        }
+        let contacts = position_contacts(problem, body1, body2, &stroke, shape)?;
+        let x: Vec<f64> = points.x.iter().map(|p| p[0]).collect();
+        let share_ends = dual_cells(&x, &points.weight);
+        let readings = share_ends
+            .windows(2)
+            .map(|c| shape.coordinate(0.5 * (c[0] + c[1])))
+            .collect();
+        let cells = share_ends.iter().map(|&c| shape.coordinate(c)).collect();
         Ok(SlidingContact {
             stroke,
             contacts,
             cells,
             readings,
+            shape,
         })
     }
 
@@ -280,6 +444,9 @@ impl SlidingContact {
         let cell = 0.25 * narrowest;
         // A share's middle then lies 2 cells from its ends, so that its reading (linear
         // between the two nearest centres) sees only its own deposit when the stroke vanishes.
+        if let Some(period) = self.shape.period() {
+            return Track::closed(period, cell.max(period / MAX_TRACK_CELLS as f64));
+        }
         let ends = &self.stroke.ends;
         let (low, high) = (
             ends[0].min(ends[ends.len() - 1]),
@@ -290,6 +457,9 @@ impl SlidingContact {
         Track::new(first, last, cell)
     }
 }
+
+/// Most cells of a closed track (a ring's wear is held in at most this many).
+pub const MAX_TRACK_CELLS: usize = 200_000;
 
 /// Most dofs of body 2's track whose flexibility is kept as one dense matrix (8000² numbers:
 /// 512 MB); beyond, each position is condensed on its own (slower, no larger).
@@ -302,7 +472,16 @@ fn known_flexibility(
     body1: &ElasticBody,
     body2: &ElasticBody,
     stroke: &Stroke,
+    shape: TrackShape,
 ) -> Result<Option<super::KnownFlexibility>, ProblemError> {
+    if shape.period().is_some() {
+        // A ring turns all of its edge under body 1.
+        let reach = [f64::NEG_INFINITY, f64::INFINITY];
+        if body2_track_dofs(problem, body2, reach)? > MAX_TRACK_DOFS {
+            return Ok(None);
+        }
+        return CondensedContact::sliding_flexibility(problem, body1, body2, reach).map(Some);
+    }
     let (points, _) = CondensedContact::body1_points(problem, body1)?;
     let x = &points.x;
     let (first, last) = (

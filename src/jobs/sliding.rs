@@ -3,8 +3,9 @@
 
 use super::driver::{check_contact_probes, contact_probes, direction, method, JobError};
 use crate::complementarity::ContactSolver;
-use crate::contact::track::{default_positions, SlidingContact};
+use crate::contact::track::{default_positions, SlidingContact, TrackShape};
 use crate::contact::CondensedContact;
+use crate::contact::MAX_POSITIONS;
 use crate::problem::{Problem, ProblemError};
 use crate::report::json::{number, numbers};
 use crate::wear::sliding::{self, SlidingHistory, SlidingSettings};
@@ -75,6 +76,8 @@ fn settings(problem: &Problem, steps: Option<usize>) -> Result<SlidingSettings, 
         WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
     Ok(SlidingSettings {
         laws: [integrator.law_of(0), integrator.law_of(1)],
+        monotonic: integrator.is_monotonic(),
+        speed: spec.speed,
         amplitude: spec.amplitude,
         omega: spec.omega,
         schedule: integrator.schedule().to_vec(),
@@ -85,6 +88,38 @@ fn settings(problem: &Problem, steps: Option<usize>) -> Result<SlidingSettings, 
     })
 }
 
+/// The number of element edges on body 2's contact edge.
+fn ring_elements(
+    problem: &Problem,
+    body2: &crate::elasticity::ElasticBody,
+) -> Result<usize, ProblemError> {
+    let c = problem.spec.contact.as_ref().expect("checked");
+    let b2 = problem
+        .body_index(&c.target_body)
+        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
+    Ok(problem
+        .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
+        .len())
+}
+
+/// On a closed track a step unit is one turn: `wear.step_time` must be the time of one turn
+/// at `wear.speed`.
+fn check_turn(
+    problem: &Problem,
+    settings: &SlidingSettings,
+    period: f64,
+) -> Result<(), ProblemError> {
+    let step_time = problem.spec.wear.as_ref().map_or(0.0, |w| w.step_time);
+    let turn = period / settings.speed;
+    if (step_time - turn).abs() > 1e-9 * turn {
+        return Err(problem.error(
+            "wear.step_time",
+            format!("on a closed track a step unit is one turn of body 2 ({period:.6} mm round), which takes {turn:.9} s at wear.speed = {} mm/s; got {step_time} s", settings.speed),
+        ));
+    }
+    Ok(())
+}
+
 /// Run the wear integration of a sliding-pairs problem.
 pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobError> {
     crate::contact::check_settings(problem)?;
@@ -92,23 +127,29 @@ pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobEr
     let start = Instant::now();
     let (body1, mut body2) = CondensedContact::bodies(problem)?;
     let c = problem.spec.contact.as_ref().expect("checked");
-    let count = match c.positions {
-        Some(m) => m,
-        None => {
+    let shape = crate::contact::track::track_shape(problem, &body2)?;
+    let count = match (c.positions, shape) {
+        (Some(m), _) => m,
+        (None, TrackShape::Ring { .. }) => ring_elements(problem, &body2)?.clamp(4, MAX_POSITIONS),
+        (None, TrackShape::Straight) => {
             let (points, _) = CondensedContact::body1_points(problem, &body1)?;
             let x = &points.x;
             let edge = (x[x.len() - 1][0] - x[0][0]).abs();
             default_positions(2.0 * settings.amplitude, edge)
         }
     };
+    let stroke = (!settings.monotonic).then_some(settings.amplitude);
     let contact = SlidingContact::build(
         problem,
         &body1,
         &mut body2,
-        settings.amplitude,
+        stroke,
         settings.first_direction.sign(),
         count,
     )?;
+    if let (true, Some(period)) = (settings.monotonic, shape.period()) {
+        check_turn(problem, &settings, period)?;
+    }
     check_contact_probes(problem, &contact.contacts[0])?;
     let method = method(problem)?;
     let mut solvers: Vec<ContactSolver> = contact
@@ -138,7 +179,14 @@ impl SlidingRun {
     /// Sliding distance of the completed steps, mm.
     pub fn distance(&self) -> f64 {
         let half_periods = self.history.steps.last().map_or(0, |s| s.half_period);
-        2.0 * self.settings.amplitude * half_periods as f64
+        self.stroke() * half_periods as f64
+    }
+
+    /// The sliding distance of one half period (reciprocating: 2u₀) or one turn (a closed
+    /// track), mm.
+    pub fn stroke(&self) -> f64 {
+        let ends = &self.contact.stroke.ends;
+        (ends[ends.len() - 1] - ends[0]).abs()
     }
 
     /// An estimate of the error that resolving the stroke into positions makes in the last
@@ -150,7 +198,9 @@ impl SlidingRun {
     /// order). On the tribometer example 24, 48, 96 and 192 positions give 12, 9.9, 3.9 and
     /// 2.0 %; the accumulated wear converges faster (docs/sliding.md).
     pub fn position_error(&self) -> Option<f64> {
-        let cycle = &self.history.last_cycle;
+        // A closed track turning one way has no '−' half period: its cycle is one turn.
+        let directions = if self.settings.monotonic { 1 } else { 2 };
+        let cycle = &self.history.last_cycle[..directions];
         if cycle.iter().any(|d| d.iter().any(|p| p.is_empty())) || self.contact.len() < 2 {
             return None;
         }
@@ -242,7 +292,11 @@ impl SlidingRun {
             "problem": problem.file,
             "pairs": "sliding",
             "positions_per_half_period": self.contact.len(),
-            "stroke": number(2.0 * self.settings.amplitude),
+            "stroke": number(self.stroke()),
+            "track_shape": match self.contact.shape {
+                TrackShape::Straight => json!("straight"),
+                TrackShape::Ring { center, radius } => json!({"ring": {"center": numbers(&center), "radius": number(radius)}}),
+            },
             "positions": numbers(&self.contact.stroke.positions),
             "steps": h.steps.len(),
             "half_periods": h.steps.last().map_or(0, |s| s.half_period),

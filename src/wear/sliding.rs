@@ -5,12 +5,13 @@
 //! # A step
 //!
 //! A step stands for k half periods (the extrapolation schedule, as for fixed pairs), sliding
-//! '+' on odd steps and back on even ones. It visits the positions in the order the stroke
-//! brings them (the reverse order on the way back), and at each position j:
+//! '+' on odd steps and back on even ones (on a closed track turning one way, a step is k
+//! turns, all '+'). It visits the positions in the order the stroke brings them (the reverse
+//! order on the way back), and at each position j:
 //!
-//! 1. the gap of body 1's point i is the geometric gap there, g_ij (body 2 translated by
-//!    s_j), plus body 1's wear w₁ᵢ plus the track's wear under the point's share of the
-//!    edge (read in its middle, [`crate::contact::track`]);
+//! 1. the gap of body 1's point i is the geometric gap there, g_ij (body 2 moved by s_j),
+//!    plus body 1's wear w₁ᵢ plus the track's wear under the point's share of the edge (read
+//!    in its middle, [`crate::contact::track`]), both as the last step left them;
 //! 2. the contact solve gives the pressure p_ij, held over the position's interval
 //!    [e_j, e_{j+1}] of the stroke;
 //! 3. body 1's points wear by k β̃₁ p_ijᵇ S_j (S_j = ∫|v|ᵃ dτ over the interval, the same
@@ -18,42 +19,43 @@
 //!    share of the edge deposits k β̃₂ p_ijᵇ S_j/|Δs_j| per millimetre of sliding onto the
 //!    track cells it passes over ([`crate::contact::track::Track::sweep`]).
 //!
-//! The solve of step 2 is implicit in the wear of its own interval, as the fixed pairs'
-//! step is in its half period: the wear that the interval adds under point i, linear in the
-//! pressure for b = 1, is a compliance c_i in series with the bodies'
-//! ([`ContactSolver::set_compliance`]). Body 1's part is exact. Body 2's part is lumped:
-//! the track under point i deepens over the interval by what every point passing over it
-//! deposits, β̃₂ pᵇ S_j where the pressure varies little over the interval, and the
-//! compliance takes all of it (its row sum), not only point i's own deposit under itself
-//! (the diagonal, the share's width over |Δs_j| once the interval is longer than the share).
-//! With the diagonal alone the rest came explicitly and k times: the tribometer example's
-//! pressures at the stroke's ends jumped from point to point at k = 100. For b ≠ 1 the compliance
-//! is the secant p^(b−1) of the pressure at the same position in the last half period that
-//! visited it (none at the first visit): it only weights how implicit the step is, since the
-//! wear added is that of the solved pressure. So large k stays stable on stiff meshes, as
-//! for fixed pairs.
+//! # What each solve holds implicitly
 //!
-//! # Looking ahead within the cycle
+//! The fixed pairs' step solves its pressure on the shape at the step's end, the half
+//! period's wear (k times) being a compliance in series with the bodies'
+//! ([`ContactSolver::set_compliance`]): stable for any k on any mesh. Here each position's
+//! solve does the same with the step's whole wear as its own pressure would make it: the
+//! compliance c_i is k Σ_q β̃ pᵇ⁻¹ S_q over all the step's intervals q (b = 1: exact in the
+//! pressure), for body 1 exactly what its point wears, for body 2 lumped (the track under
+//! point i deepens by what every share passing over it deposits, β̃₂ pᵇ S where the pressure
+//! varies little, not only point i's own share's deposit). Every position thus meets the
+//! step's end shape as its own pressure makes it. With a vanishing stroke the positions are
+//! alike and this is the fixed pairs' step; on a ring turning under a block every position
+//! is alike and the ring wears evenly to round-off. The '+' steps also see the last '−' half
+//! period's wear (k times, from the last cycle), as the fixed pairs' first half period
+//! does, so that both halves of a cycle meet its end shape. For b ≠ 1 the compliance is the
+//! secant pᵇ⁻¹ of the pressure at the same position at its last visit (none at the first):
+//! it only weights how implicit the step is, since the wear added is that of the solved
+//! pressure.
 //!
-//! A step of k half periods wears k times what one does, so the shape a position meets
-//! depends on where in the cycle it comes: under the stroke's first positions the cycle's
-//! wear is still to come, under its last ones it is done. With k = 10 that spread is ten
-//! times the physical one, and the periodic state the scheme settled in moved with k
-//! (punch-b40 with a vanishing stroke: 0.4 % of the peak off the fixed pairs' steady
-//! pressures). So each position's solve also holds the rest of its half period, the
-//! intervals still to come, as if they wore at its own pressure (a larger compliance, summed
-//! over them); and on the way out ('+' steps), once a cycle is complete, it sees the wear of
-//! the last '−' half period under it, k times, as the fixed pairs' first half period does.
-//! With a vanishing stroke the positions are alike and this is the fixed pairs' scheme.
+//! Three other choices failed, with k = 10 to 100 half periods per step:
+//! - each position seeing the wear the step's earlier positions had laid down (the
+//!   compliance holding only the rest of the step): on a ring the step's deposit then
+//!   stands as a step of k turns' wear under the block, which moved the pressure to its
+//!   leading edge and left the ring's wear 62 % uneven around it;
+//! - the rest of the cycle taken from the last one, corrected explicitly by the difference
+//!   of the positions' pressures: the tribometer's pressures oscillated from point to point;
+//! - body 2's compliance holding only a point's own share's deposit under itself (the
+//!   diagonal): the rest came explicitly and k times, with the same oscillation at the
+//!   stroke's ends.
 //!
-//! Taking more of the cycle from the last one (the rest of the own half period, lagged and
-//! corrected by the difference of the positions' pressures) made the tribometer example's
-//! pressures oscillate from point to point at k = 100: that difference, large where the
-//! slider runs onto the ends of its track, was taken explicitly and k times.
+//! Holding nothing of the step (each position on the last step's shape alone) left the
+//! steady state depending on k: a vanishing stroke on punch-b40 0.4 % of the peak off the
+//! fixed pairs' steady pressures at k = 10.
 
 use super::{ScheduleEntry, StopReason, WearLaw};
 use crate::complementarity::{ContactSolution, ContactSolver, Direction, Status};
-use crate::contact::track::{SlidingContact, Track};
+use crate::contact::track::{SlidingContact, Stroke, Track};
 use crate::kinematics::{factor, partial_sliding};
 use serde::Serialize;
 
@@ -62,6 +64,11 @@ use serde::Serialize;
 pub struct SlidingSettings {
     /// Each body's wear law (None: it does not wear).
     pub laws: [Option<WearLaw>; 2],
+    /// Whether body 2 turns one way (a closed track; a step is then k turns) rather than
+    /// reciprocating.
+    pub monotonic: bool,
+    /// Monotonic sliding speed v, mm/s.
+    pub speed: f64,
     /// Reciprocating amplitude u₀, mm.
     pub amplitude: f64,
     /// Angular frequency ω, rad/s.
@@ -185,7 +192,7 @@ pub fn run(
 ) -> SlidingHistory {
     let m = contact.len();
     let n = contact.contacts[0].len();
-    let sliding = interval_sliding(settings, m);
+    let sliding = interval_sliding(settings, &contact.stroke);
     let unworn = Wear {
         body1: vec![0.0; n],
         track: contact.empty_track(),
@@ -210,7 +217,7 @@ pub fn run(
     let mut gap = vec![0.0; n];
     let mut compliance = vec![0.0; n];
     for step in 1..=settings.steps {
-        let forward = step % 2 == 1;
+        let forward = settings.monotonic || step % 2 == 1;
         let direction = if forward {
             settings.first_direction
         } else {
@@ -231,9 +238,9 @@ pub fn run(
             let s = contact.stroke.positions[j];
             let kf = k as f64;
             let last = &state.last[d][j];
-            // The intervals whose wear the solve holds implicitly: its own and the rest of
-            // its half period (module docs).
-            let rest = if forward { j..m } else { 0..j + 1 };
+            // The step's whole wear, held implicitly at this position's pressure (module
+            // docs): every position meets the step's end shape as its own pressure makes it.
+            let rest = 0..m;
             implicit_compliance(
                 settings,
                 contact,
@@ -246,7 +253,7 @@ pub fn run(
             );
             for (i, g) in gap.iter_mut().enumerate() {
                 let x = contact.readings[i] - s;
-                *g = c.points.initial_gap[i] + state.done.at(i, x) + state.step.at(i, x);
+                *g = c.points.initial_gap[i] + state.done.at(i, x);
                 if let (true, Some(back)) = (forward, &state.back) {
                     *g += kf * back.at(i, x);
                 }
@@ -285,7 +292,7 @@ pub fn run(
             break;
         }
         state.done.add(1.0, &state.step);
-        if !forward {
+        if !forward && !settings.monotonic {
             let back = state.back.get_or_insert_with(|| state.step.clone());
             back.zero();
             back.add(1.0 / k as f64, &state.step);
@@ -339,7 +346,24 @@ struct IntervalSliding {
     per_body: [f64; 2],
 }
 
-fn interval_sliding(settings: &SlidingSettings, m: usize) -> Vec<IntervalSliding> {
+fn interval_sliding(settings: &SlidingSettings, stroke: &Stroke) -> Vec<IntervalSliding> {
+    let m = stroke.positions.len();
+    if settings.monotonic {
+        // At the constant speed v: ∫|v|ᵃ dτ = vᵃ⁻¹ |Δs|.
+        return stroke
+            .ends
+            .windows(2)
+            .map(|e| {
+                let length = (e[1] - e[0]).abs();
+                IntervalSliding {
+                    length,
+                    per_body: settings
+                        .laws
+                        .map(|law| law.map_or(0.0, |l| settings.speed.powf(l.a - 1.0) * length)),
+                }
+            })
+            .collect();
+    }
     // The offset −u₀ cos θ cut into m equal parts: cos θ_j = 1 − 2j/m.
     let theta = |j: usize| (1.0 - 2.0 * j as f64 / m as f64).clamp(-1.0, 1.0).acos();
     (0..m)

@@ -39,7 +39,7 @@ struct MeshInputs {
 
 impl MeshInputs {
     fn alignment_of(spec: &ProblemSpec) -> Option<[&String; 4]> {
-        let c = spec.contact.as_ref().filter(|c| c.align_target_mesh)?;
+        let c = spec.contact.as_ref().filter(|c| c.aligns_target_mesh())?;
         Some([&c.body, &c.edge, &c.target_body, &c.target_edge])
     }
 
@@ -193,7 +193,12 @@ impl Problem {
     /// Body 2's mesh aligned to body 1's element ends (see [`Problem::target_alignment`]),
     /// from the meshes as `given`.
     fn align_target(&self, given: &[Mesh]) -> Result<Option<AlignedTarget>, ProblemError> {
-        let Some(c) = self.spec.contact.as_ref().filter(|c| c.align_target_mesh) else {
+        let Some(c) = self
+            .spec
+            .contact
+            .as_ref()
+            .filter(|c| c.aligns_target_mesh())
+        else {
             return Ok(None);
         };
         let (Ok(b1), Ok(b2)) = (self.body_index(&c.body), self.body_index(&c.target_body)) else {
