@@ -85,9 +85,10 @@ fn shipped_examples_pass_and_quadratic_hertz_is_named() {
         }
         let (contact, _, _) = wearfem::contact::CondensedContact::build(&p).unwrap();
         let change = p_check(&p, &contact).unwrap().unwrap().change;
-        if name == "tribometer" {
-            // Meshed for its worn state (a flat 0.57 mm wide), not for the first Hertz
-            // contact 0.115 mm wide, as its description says: the check must say so.
+        if name == "tribometer" || name == "block-on-ring" {
+            // Meshed for their worn states (a flat 0.57 mm wide on the cylinder, a scar about
+            // 2.5 mm wide on the block), not for their first Hertz contacts (0.115 and 0.46
+            // mm wide), as their descriptions say: the check must say so.
             assert!(change > P_CHANGE_LIMIT, "{name}: {change}");
             continue;
         }

@@ -353,6 +353,7 @@ fn the_tribometer_runs_through_the_binary_and_other_jobs_refuse_sliding_pairs() 
         "body1.csv",
         "positions.csv",
         "track.png",
+        "wear_body1.png",
         "positions.png",
     ] {
         assert!(out.join(file).exists(), "{file}");

@@ -434,16 +434,27 @@ impl SlidingContact {
 
     /// A track over all that the stroke brings under body 1 (with one cell's margin), in
     /// cells of a quarter of the narrowest contact point's share, so that a cell of the
-    /// track straddles the ends of body 1's shares over a small part of them.
+    /// track straddles the ends of body 1's shares over a small part of them, or of 1/64 of
+    /// an interval of the stroke where that is longer.
     pub fn empty_track(&self) -> Track {
         let narrowest = self
             .cells
             .windows(2)
             .map(|c| c[1] - c[0])
             .fold(f64::INFINITY, f64::min);
-        let cell = 0.25 * narrowest;
-        // A share's middle then lies 2 cells from its ends, so that its reading (linear
-        // between the two nearest centres) sees only its own deposit when the stroke vanishes.
+        let interval = self
+            .stroke
+            .ends
+            .windows(2)
+            .map(|e| (e[1] - e[0]).abs())
+            .fold(f64::INFINITY, f64::min);
+        // A share's middle lies 2 cells from its ends, so that its reading (linear between
+        // the two nearest centres) sees only its own deposit when the stroke vanishes. Where
+        // an interval is long against the shares, every share's deposit is a plateau that
+        // long with ramps as wide as the share, and the track is smooth on the interval's
+        // scale: cells of 1/64 of it cost a 64th of the sweeps of the finest (the block on
+        // a ring, 6.9 mm intervals over shares down to 0.008 mm: 12.8 s of run → 0.9 s).
+        let cell = (0.25 * narrowest).max(interval / 64.0);
         if let Some(period) = self.shape.period() {
             return Track::closed(period, cell.max(period / MAX_TRACK_CELLS as f64));
         }

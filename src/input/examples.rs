@@ -44,6 +44,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
     ),
     ("pin", include_str!("../../examples/pin.toml")),
     ("tribometer", include_str!("../../examples/tribometer.toml")),
+    (
+        "block-on-ring",
+        include_str!("../../examples/block-on-ring.toml"),
+    ),
 ];
 
 /// The text of built-in example `name`.

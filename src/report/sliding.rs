@@ -1,11 +1,11 @@
 //! The files of a sliding-pairs run: summary.json, history.csv, track.csv (body 2's worn
 //! profile along its track), body1.csv (body 1's wear and the last cycle's pressures at its
 //! reversals), positions.csv (the pressure at every position of the last cycle), and figures
-//! of the track and of the pressure as the slider moves.
+//! of each body's wear and of the pressure as the slider moves.
 
 use crate::jobs::sliding::SlidingRun;
 use crate::output::{write_csv, write_json, OutputError};
-use crate::plot::{line_plot, problem_name, Series};
+use crate::plot::{line_plot, problem_name, write_figure, Figure, Series};
 use crate::problem::Problem;
 use serde_json::{json, Value};
 use std::path::Path;
@@ -99,26 +99,48 @@ fn figures(dir: &Path, problem: &Problem, run: &SlidingRun) -> Result<(), String
         .zip(&h.wear_body1)
         .map(|(x, w)| (x[0], 1e3 * w))
         .collect();
-    line_plot(
-        &dir.join("track.svg"),
-        &format!(
-            "{name}: each body's wear after {} half periods",
-            h.steps.last().map_or(0, |s| s.half_period)
-        ),
-        "x (mm; body 2 at rest)",
-        "wear depth (µm)",
-        &[
-            Series {
-                label: "body 2 along its track",
-                points: track,
+    let half_periods = h.steps.last().map_or(0, |s| s.half_period);
+    // Two figures: the bodies' depths can differ by orders of magnitude (a polymer block on a
+    // steel ring: 48 µm against 0.0008 µm).
+    // Depths from zero: a ring's even wear, uneven at round-off, would otherwise fill the
+    // axis with its 1e-10 ripple.
+    let depth = |file: &str, title: String, x_label: &'static str, label: &'static str, points| {
+        write_figure(
+            &dir.join(file),
+            &Figure {
+                title,
+                x_label,
+                y_label: "wear depth (µm)",
+                series: vec![Series { label, points }],
+                log_y: false,
+                zero_y: true,
             },
-            Series {
-                label: "body 1 at its points",
-                points: body1,
-            },
-        ],
+        )
+    };
+    depth(
+        "track.svg",
+        format!("{name}: body 2's wear along its track after {half_periods} half periods"),
+        "x on body 2's track (mm; at rest, or arc length on a ring)",
+        "body 2",
+        track,
     )?;
-    // The pressure at a few positions of the last '+' half period, over body 2's track.
+    depth(
+        "wear_body1.svg",
+        format!("{name}: body 1's wear after {half_periods} half periods"),
+        "x (mm)",
+        "body 1 at its contact points",
+        body1,
+    )?;
+    // The pressure at a few positions of the last '+' half period: over body 2's straight
+    // track, where it shows the slider's travel; over body 1 on a closed track, where the
+    // positions are alike and would otherwise straddle the track's seam.
+    let closed = run.contact.shape.period().is_some();
+    let along = |x: f64, s: f64| if closed { x } else { x - s };
+    let axis = if closed {
+        "x on body 1 (mm)"
+    } else {
+        "x on body 2's track (mm)"
+    };
     let forward = &h.last_cycle[0];
     if forward.iter().all(|p| !p.is_empty()) && !forward.is_empty() {
         let m = forward.len();
@@ -140,14 +162,14 @@ fn figures(dir: &Path, problem: &Problem, run: &SlidingRun) -> Result<(), String
                     .x
                     .iter()
                     .zip(&forward[j])
-                    .map(|(x, p)| (x[0] - run.contact.stroke.positions[j], *p))
+                    .map(|(x, p)| (along(x[0], run.contact.stroke.positions[j]), *p))
                     .collect(),
             })
             .collect();
         line_plot(
             &dir.join("positions.svg"),
             &format!("{name}: the pressure as the slider moves (last '+' half period)"),
-            "x on body 2's track (mm)",
+            axis,
             "contact pressure (MPa)",
             &series,
         )?;
