@@ -475,6 +475,35 @@ extrapolation = [{ until = 2, k = 1 }, { k = 10 }]
 "#;
 
 #[test]
+fn probes_on_body_2_report_its_wear_where_they_are() {
+    // A probe on the ring's side (a quarter turn from the top) and one on its bottom read
+    // the even depth β̃₂ (F/t) × turns after every step.
+    let text = block_on_ring("body2 = { beta = 1.0e-6 }")
+        + "[probes]\nside = { body = \"ring\", at = [20.0, -20.0] }\nbottom = { body = \"ring\", at = [0.0, -40.0] }\n";
+    let run = run(&text);
+    assert_eq!(run.track_probes.len(), 2);
+    for step in &run.history.steps {
+        let depth = 1.0e-6 * LOAD_PER_THICKNESS * step.half_period as f64;
+        for w in &step.track_probes {
+            assert!(
+                (w - depth).abs() < 1e-6 * depth,
+                "step {}: {w} against {depth}",
+                step.step
+            );
+        }
+    }
+    // Off the rim: refused by name.
+    let text = block_on_ring("body2 = { beta = 1.0e-6 }")
+        + "[probes]\ninside = { body = \"ring\", at = [15.0, -20.0] }\n";
+    let problem = Problem::from_toml(&text, "bad.toml").unwrap();
+    let error = sliding::wear(&problem, None)
+        .err()
+        .expect("refused")
+        .to_string();
+    assert!(error.contains("probes.inside.at"), "{error}");
+}
+
+#[test]
 fn a_ring_turning_under_a_block_wears_evenly_all_round() {
     // Only the ring wears: every material point of its rim passes under the whole contact
     // once a turn, so after s of sliding its depth is β̃₂ (F/t) s / (2πR) all round, whatever

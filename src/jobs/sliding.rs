@@ -26,8 +26,10 @@ pub struct SlidingRun {
     pub history: SlidingHistory,
     /// The run's settings.
     pub settings: SlidingSettings,
-    /// Probe names and their contact point indices.
+    /// Probe names on body 1 and their contact point indices.
     pub probes: Vec<(String, usize)>,
+    /// Probe names on body 2 and their track coordinates (mm).
+    pub track_probes: Vec<(String, f64)>,
     /// Seconds spent on the FE set-up and the positions' condensation.
     pub setup_seconds: f64,
     /// Seconds spent integrating.
@@ -85,7 +87,65 @@ fn settings(problem: &Problem, steps: Option<usize>) -> Result<SlidingSettings, 
         record: spec.record.clone(),
         first_direction: direction(problem)?,
         probes: vec![],
+        track_probes: vec![],
     })
+}
+
+/// The probes on body 2, which must lie on its contact edge (within 1e-6 of the body's
+/// size, or of the ring's radius): their track coordinates (mm), where a sliding run reports
+/// body 2's wear.
+fn track_probes(
+    problem: &Problem,
+    body2: &crate::elasticity::ElasticBody,
+    shape: TrackShape,
+) -> Result<Vec<(String, f64)>, ProblemError> {
+    let c = problem.spec.contact.as_ref().expect("checked");
+    let b2 = problem
+        .body_index(&c.target_body)
+        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
+    let edge = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?;
+    let mut out = Vec::new();
+    for (name, probe) in problem
+        .spec
+        .probes
+        .iter()
+        .filter(|(_, p)| p.body == c.target_body)
+    {
+        let [x, z] = probe.at;
+        let (coordinate, off) = match shape {
+            TrackShape::Straight => {
+                let off = body2
+                    .mesh
+                    .cross_edges(edge, probe.at, [0.0, 1.0])
+                    .map_or(f64::INFINITY, |(s, ..)| s.abs());
+                (x, off)
+            }
+            TrackShape::Ring { center, radius } => {
+                let (dx, dz) = (x - center[0], z - center[1]);
+                let arc = radius * dx.atan2(dz);
+                (
+                    arc.rem_euclid(std::f64::consts::TAU * radius),
+                    (dx.hypot(dz) - radius).abs(),
+                )
+            }
+        };
+        let size = match shape {
+            TrackShape::Ring { radius, .. } => radius,
+            TrackShape::Straight => body2
+                .mesh
+                .vertices
+                .iter()
+                .fold(0.0f64, |a, v| a.max(v[0].abs()).max(v[1].abs())),
+        };
+        if off > 1e-6 * size.max(1.0) {
+            return Err(problem.error(
+                format!("probes.{name}.at"),
+                format!("({x}, {z}) is not on body 2's contact edge \"{}\": with sliding pairs a probe on body 2 reports its wear along the track there", c.target_edge),
+            ));
+        }
+        out.push((name.clone(), coordinate));
+    }
+    Ok(out)
 }
 
 /// The number of element edges on body 2's contact edge.
@@ -150,7 +210,11 @@ pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobEr
     if let (true, Some(period)) = (settings.monotonic, shape.period()) {
         check_turn(problem, &settings, period)?;
     }
-    check_contact_probes(problem, &contact.contacts[0])?;
+    // Probes on body 2 report its wear along the track; those on body 1, its pressure.
+    let track_probes = track_probes(problem, &body2, contact.shape)?;
+    let mut on_body1 = problem.clone();
+    on_body1.spec.probes.retain(|_, p| p.body != c.target_body);
+    check_contact_probes(&on_body1, &contact.contacts[0])?;
     let method = method(problem)?;
     let mut solvers: Vec<ContactSolver> = contact
         .contacts
@@ -158,8 +222,9 @@ pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobEr
         .map(|c| ContactSolver::new(c, method))
         .collect();
     let setup_seconds = start.elapsed().as_secs_f64();
-    let probes = contact_probes(problem, &contact.contacts[0]);
+    let probes = contact_probes(&on_body1, &contact.contacts[0]);
     settings.probes = probes.iter().map(|p| p.1).collect();
+    settings.track_probes = track_probes.iter().map(|p| p.1).collect();
     let start = Instant::now();
     let history = sliding::run(&settings, &contact, &mut solvers);
     let run_seconds = start.elapsed().as_secs_f64();
@@ -169,6 +234,7 @@ pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobEr
         history,
         settings,
         probes,
+        track_probes,
         setup_seconds,
         run_seconds,
         body_names: [c.body.clone(), c.target_body.clone()],
@@ -309,6 +375,7 @@ impl SlidingRun {
             "worn_volume": [number(area[0] * t), number(area[1] * t)],
             "position_error": self.position_error().map(number),
             "probes": self.probes.iter().map(|(name, i)| json!({"name": name, "point": i, "x": numbers(&points.x[*i])})).collect::<Vec<_>>(),
+            "track_probes": self.track_probes.iter().map(|(name, x)| json!({"name": name, "track_x": number(*x)})).collect::<Vec<_>>(),
             "history": h.steps,
             "final": {
                 "x": points.x.iter().map(|p| number(p[0])).collect::<Vec<_>>(),

@@ -18,6 +18,11 @@ pub fn write(dir: &Path, problem: &Problem, run: &SlidingRun) -> Result<(), Outp
         .into_iter()
         .map(String::from)
         .chain(run.probes.iter().map(|(name, _)| format!("p_{name}_MPa")))
+        .chain(
+            run.track_probes
+                .iter()
+                .map(|(name, _)| format!("wear_{name}_mm")),
+        )
         .chain(["worn_volume_body1_mm3", "worn_volume_body2_mm3"].map(String::from))
         .collect();
     let rows: Vec<Vec<Value>> = h
@@ -32,6 +37,7 @@ pub fn write(dir: &Path, problem: &Problem, run: &SlidingRun) -> Result<(), Outp
                 json!(s.peak_pressure),
             ];
             row.extend(s.probes.iter().map(|p| json!(p)));
+            row.extend(s.track_probes.iter().map(|w| json!(w)));
             row.extend(s.worn_area.iter().map(|a| json!(a * run.thickness)));
             row
         })

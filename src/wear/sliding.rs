@@ -83,6 +83,8 @@ pub struct SlidingSettings {
     pub first_direction: Direction,
     /// Contact points whose pressure each step reports (indices).
     pub probes: Vec<usize>,
+    /// Track coordinates (mm) where each step reports body 2's wear.
+    pub track_probes: Vec<f64>,
 }
 
 /// One step of a sliding-pairs run.
@@ -98,6 +100,8 @@ pub struct SlidingStep {
     pub k: usize,
     /// Pressure at each probe at the step's last position (a reversal), MPa.
     pub probes: Vec<f64>,
+    /// Body 2's wear at each of its probes (`track_probes`), mm.
+    pub track_probes: Vec<f64>,
     /// Largest pressure over the step's positions, MPa.
     pub peak_pressure: f64,
     /// Worn area of body 1 and of body 2 (∫ w ds, mm²; times the thickness, the volume).
@@ -309,6 +313,11 @@ pub fn run(
                 .probes
                 .iter()
                 .map(|&i| pressures[last_position][i])
+                .collect(),
+            track_probes: settings
+                .track_probes
+                .iter()
+                .map(|&x| state.done.track.at(x))
                 .collect(),
             peak_pressure: peak,
             worn_area: worn_area(contact, &state),
