@@ -13,6 +13,7 @@ use std::time::Instant;
 mod cases;
 mod heat_cases;
 mod part_cases;
+mod sliding_cases;
 mod wear_cases;
 
 /// How a check's difference is measured and bounded.
@@ -264,6 +265,9 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     heat_cases::punch(&mut checks)?;
     part_cases::supports(&mut checks)?;
     part_cases::body_volumes(&mut checks)?;
+    sliding_cases::trough(&mut checks)?;
+    sliding_cases::ring(&mut checks)?;
+    sliding_cases::tribometer_volumes(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks
             .iter_mut()
