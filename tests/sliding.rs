@@ -572,3 +572,54 @@ fn a_closed_track_must_be_a_circle_turned_once_a_step() {
         "contact.target_edge",
     );
 }
+
+#[test]
+fn review_findings_stay_fixed() {
+    // A misspelt `pairs` reached every job but the sliding run and ran fixed pairs, exit 0.
+    let out = std::env::temp_dir().join(format!("wearfem-sliding-typo-{}", std::process::id()));
+    for (set, key) in [
+        ("contact.pairs=Sliding", "contact.pairs"),
+        ("contact.pairs=fixed", "contact.positions"),
+        ("wear.amplitude=0", "wear.amplitude"),
+    ] {
+        for job in ["run", "contact"] {
+            let result = std::process::Command::new(env!("CARGO_BIN_EXE_wearfem"))
+                .args(["--quiet", job, "tribometer", "--set", set, "--out"])
+                .arg(&out)
+                .output()
+                .unwrap();
+            let stderr = String::from_utf8_lossy(&result.stderr);
+            if job == "contact" && set.starts_with("wear.") {
+                continue;
+            }
+            assert_eq!(result.status.code(), Some(2), "{job} {set}: {stderr}");
+            assert!(stderr.contains(key), "{job} {set}: {stderr}");
+        }
+    }
+    let _ = std::fs::remove_dir_all(&out);
+    // A probe on a straight track's flat was always refused: it reads the trough now.
+    let text = slider_on_flat(
+        5000.0,
+        "body2 = { beta = 1.0e-6, a = 1.0, b = 1.0 }\namplitude = 50.0\nsteps = 1\nextrapolation = [{ k = 1 }]",
+        "",
+    ) + "[probes]\nmiddle = { body = \"flat\", at = [0.0, 0.0] }\n";
+    let run = run(&text);
+    let read = run.history.steps[0].track_probes[0];
+    assert!((read - run.history.track.at(0.0)).abs() < 1e-15, "{read}");
+    assert!(
+        (read - 1.0e-6 * LOAD_PER_THICKNESS).abs() < 5e-3 * 1.0e-4,
+        "{read}"
+    );
+    // Loads on a turning ring are refused by name (they were read in the wrong frame).
+    let text = block_on_ring("body2 = { beta = 1.0e-6 }").replace(
+        "[[bodies.supports]]\nedge = \"hub\"",
+        "[[bodies.tractions]]\nedge = \"rim\"\nnormal = 5.0\n[[bodies.supports]]\nedge = \"hub\"",
+    );
+    assert!(text.contains("normal = 5.0"));
+    let problem = Problem::from_toml(&text, "bad.toml").unwrap();
+    let error = sliding::wear(&problem, None)
+        .err()
+        .expect("refused")
+        .to_string();
+    assert!(error.contains("bodies[1].tractions"), "{error}");
+}

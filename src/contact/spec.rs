@@ -117,7 +117,6 @@ pub fn check_settings(problem: &Problem) -> Result<(), ProblemError> {
         )?,
         other => return Err(unknown_discretisation(problem, other)),
     }
-    check_pairs(problem, c)?;
     // The meshes as given: the lines added to body 2 under body 1's element ends change no
     // edge's name or whether it lies on the boundary, and would cost three more mesh builds.
     let mesh1 = problem.mesh_as_given(b1)?;
@@ -247,6 +246,9 @@ pub(super) fn contact_section(
     if b1 == b2 {
         return Err(problem.error("contact.target_body", "must differ from contact.body"));
     }
+    // Every job reads the contact section here: a misspelt `pairs` must not run fixed pairs
+    // in silence (review of 2026-11-29: "Sliding" and "slide" did, exit 0).
+    check_pairs(problem, c)?;
     if problem.spec.plate.is_some() && !problem.spec.bodies[b1].supports.is_empty() {
         // The plate equilibrium counts every load on body 1; a support would take some.
         return Err(problem.error(

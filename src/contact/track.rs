@@ -260,6 +260,34 @@ impl TrackShape {
     }
 }
 
+/// Loads and prescribed displacements on a turning ring are not built: they would have to turn
+/// with it or stay in space, and the condensation reads them in the frame the ring was
+/// assembled in (review of 2026-11-29: a rim traction made the positions differ and the ring
+/// wear 0.5 % unevenly, in silence).
+fn refuse_ring_loads(problem: &Problem, body2: &ElasticBody) -> Result<(), ProblemError> {
+    let c = problem.spec.contact.as_ref().expect("checked");
+    let b2 = problem
+        .body_index(&c.target_body)
+        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
+    let plate: Vec<&str> = problem.spec.plate.iter().map(|p| p.edge.as_str()).collect();
+    let loaded = problem
+        .load_vector(b2, body2, &plate)?
+        .iter()
+        .any(|f| *f != 0.0);
+    if loaded || body2.has_prescribed() {
+        let key = if loaded {
+            format!("bodies[{b2}].tractions")
+        } else {
+            format!("bodies[{b2}].supports")
+        };
+        return Err(problem.error(
+            key,
+            "a ring turning under body 1 (sliding pairs on a closed track) may not carry loads or prescribed displacements of its own yet; hold it by fixed supports (its shaft or hub)",
+        ));
+    }
+    Ok(())
+}
+
 /// The shape of body 2's contact edge as a track: a whole circle (every element edge's ends and
 /// middle at one distance from one centre, to 1e-9 of it) or, when the edge has two ends,
 /// straight.
@@ -398,6 +426,7 @@ impl SlidingContact {
             }
         };
         if let TrackShape::Ring { center, radius } = shape {
+            refuse_ring_loads(problem, body2)?;
             if let Some(p) = points.x.iter().find(|p| (p[0] - center[0]).abs() >= radius) {
                 return Err(problem.error(
                     "contact.edge",

@@ -112,6 +112,47 @@ impl TryFrom<WearLawInput> for WearLaw {
 
 type KeyError = (String, String);
 
+/// The sliding's own keys, which a duration in metres, seconds or cycles is converted by:
+/// named before the duration could be blamed for them (review of 2026-11-29: an amplitude of
+/// 0 was reported as `wear.distance`).
+fn check_kinematics(spec: &WearSpec) -> Result<(), KeyError> {
+    let positive = |key: &str, value: f64, what: &str| {
+        if value > 0.0 && value.is_finite() {
+            Ok(())
+        } else {
+            Err((format!("wear.{key}"), format!("{what}, got {value}")))
+        }
+    };
+    match spec.sliding.as_str() {
+        "reciprocating" => {
+            positive(
+                "amplitude",
+                spec.amplitude,
+                "reciprocating sliding needs u₀ > 0 (mm)",
+            )?;
+            positive(
+                "omega",
+                spec.omega,
+                "reciprocating sliding needs ω > 0 (rad/s)",
+            )
+        }
+        "monotonic" => {
+            positive(
+                "speed",
+                spec.speed,
+                "monotonic sliding needs a speed v > 0 (mm/s)",
+            )?;
+            positive(
+                "step_time",
+                spec.step_time,
+                "monotonic sliding needs a step time > 0 (s)",
+            )
+        }
+        // Named by the integrator's own check.
+        _ => Ok(()),
+    }
+}
+
 /// `spec` with `steps` (and, when the schedule overshoots, `extrapolation`) worked out from
 /// whichever of `steps`, `cycles`, `distance` and `time` it gives, cut to land on its record
 /// points in metres, seconds or cycles (module [`crate::input::duration`]), which join
@@ -139,6 +180,7 @@ pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
             )
         }
     }
+    check_kinematics(spec)?;
     let points = record_points(spec)?;
     if spec.steps > 0 && points.is_empty() {
         return Ok(spec.clone());
