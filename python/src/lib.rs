@@ -297,6 +297,21 @@ impl PyProblem {
         out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
     }
 
+    /// A run of sliding pairs (`contact.pairs = "sliding"`): summary JSON text. A run that
+    /// stopped (a failed solve) is raised with its reason, nothing of it returned, as the
+    /// command line exits 1.
+    fn _run_sliding(&self, py: Python<'_>, steps: Option<usize>) -> PyResult<String> {
+        let p = self.model(py)?;
+        let out = py.allow_threads(|| {
+            let run = wearfem::jobs::sliding::wear(p, steps)?;
+            if let Some((step, reason)) = &run.history.stopped {
+                return Err(JobError::Compute(format!("step {step}: {reason}")));
+            }
+            Ok(run.summary(p))
+        });
+        out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
+    }
+
     /// Steady state: summary JSON text, with "probes" (name → contact point index) added.
     fn _steady(&self, py: Python<'_>) -> PyResult<String> {
         let p = self.model(py)?;

@@ -417,3 +417,18 @@ def test_the_type_stubs_match_the_module(tmp_path):
         text=True,
     )
     assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+def test_sliding_pairs_run_from_python_with_archards_volumes():
+    """Issue 29: the tribometer's sliding pairs, 6 half periods of a 4 mm stroke under 500 N:
+    each body's worn volume is k F s (Archard, a = b = 1) to 1e-6; the fixed pairs' run
+    refuses sliding pairs by name."""
+    tribometer = wearfem.Problem.builtin("tribometer")
+    summary = tribometer.run_sliding(steps=6)
+    s = 6 * 4.0 / 1000.0  # m
+    for body, k in [(0, 5.0e-7), (1, 1.0e-6)]:
+        assert summary["worn_volume"][body] == pytest.approx(k * 500.0 * s, rel=1e-6)
+    assert len(summary["track"]["x"]) == len(summary["track"]["wear_body2"])
+    with pytest.raises(wearfem.WearfemError) as e:
+        tribometer.run(steps=2)
+    assert e.value.key == "contact.pairs"

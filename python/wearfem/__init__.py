@@ -428,6 +428,18 @@ class Problem:
             raise TypeError(f"progress must be callable as progress(step, half_period), got {progress!r}")
         return RunResult(json.loads(self._inner._run(steps, progress)))
 
+    def run_sliding(self, steps: Optional[int] = None) -> dict:
+        """Wear time integration of sliding pairs (``contact.pairs = "sliding"``; ``wearfem
+        run`` on such a problem), ``steps`` replacing the file's duration: summary.json as a
+        dict (docs/sliding.md: ``track``, ``final``, ``worn_volume``, ``history``, …). A run
+        that stops on a failed solve raises RuntimeError with its reason.
+        """
+        if steps is not None:
+            steps = _operator.index(steps)
+            if steps < 1:
+                raise ValueError(f"steps must be a positive integer, got {steps}")
+        return json.loads(self._inner._run_sliding(steps))
+
     def steady(self, method: str = "exact") -> SteadyResult:
         """Steady worn state computed directly (``wearfem steady``).
 

@@ -55,7 +55,7 @@ pub fn require_fixed_pairs(problem: &Problem, what: &str) -> Result<(), ProblemE
     if is_sliding(problem) {
         return Err(problem.error(
             "contact.pairs",
-            format!("is \"sliding\", and {what} is only built for fixed pairs so far; `wearfem run` integrates sliding pairs (the steady state of a finite stroke, parameter studies and the Python layer's runs are not built for them yet)"),
+            format!("is \"sliding\", and {what} is only built for fixed pairs so far; `wearfem run` (Python: `Problem.run_sliding`) integrates sliding pairs (the steady state of a finite stroke and parameter studies are not built for them yet)"),
         ));
     }
     Ok(())
