@@ -395,6 +395,20 @@ fn body2_traces(
     }
 }
 
+/// One element edge: (element, local edge).
+pub(crate) type EdgeRef = (usize, usize);
+
+/// Body 2's index and its named contact edge (element, local edge) on `body2`'s mesh,
+/// checked: what the sliding pairs' track is made of.
+pub(crate) fn target_edge<'m>(
+    problem: &Problem,
+    body2: &'m ElasticBody,
+) -> Result<(usize, &'m [EdgeRef]), ProblemError> {
+    let (c, _, b2) = spec::contact_section(problem)?;
+    let edge = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?;
+    Ok((b2, edge))
+}
+
 /// The contact points with their normals and tangents turned back by `turn` (radians): the
 /// directions in body 2's frame of assembly (see [`CondensedContact::condense`]).
 fn body2_frame(points: &ContactPoints, turn: f64) -> ContactPoints {

@@ -6,6 +6,19 @@ use crate::elasticity::{ElasticBody, Row};
 use crate::geometry::Point;
 use crate::problem::{Problem, ProblemError};
 
+/// Each trace's displacement along its point's direction, as a row of dofs.
+fn projected(traces: &[Trace], directions: &[Point]) -> Vec<Row> {
+    traces
+        .iter()
+        .zip(directions)
+        .map(|(tr, v)| {
+            tr.iter()
+                .flat_map(|&(g, coef)| [(g[0], coef * v[0]), (g[1], coef * v[1])])
+                .collect()
+        })
+        .collect()
+}
+
 /// Add one body's flexibility at the contact points, projected, to A_nn and A_nt (row-major
 /// N × N): n_iᵀ G_ij n_j and n_iᵀ G_ij τ_j with G = C K⁻¹ Cᵀ by the Schur complement onto the
 /// trace dofs ([`ElasticBody::row_flexibility`]). It gives what 2N solves with the body's
@@ -21,17 +34,7 @@ pub(super) fn add_flexibility(
     a_nn: &mut [f64],
     a_nt: &mut [f64],
 ) -> Result<(), ProblemError> {
-    let project = |directions: &[Point]| -> Vec<Row> {
-        traces
-            .iter()
-            .zip(directions)
-            .map(|(tr, v)| {
-                tr.iter()
-                    .flat_map(|&(g, coef)| [(g[0], coef * v[0]), (g[1], coef * v[1])])
-                    .collect()
-            })
-            .collect()
-    };
+    let project = |directions: &[Point]| projected(traces, directions);
     let normal = project(&points.normal);
     let both: Vec<Row> = normal
         .iter()
@@ -93,13 +96,12 @@ impl DofFlexibility {
         a_nn: &mut [f64],
         a_nt: &mut [f64],
     ) -> bool {
+        // The projected rows with G's indices for the dofs.
         let project = |directions: &[Point]| -> Option<Vec<Vec<(usize, f64)>>> {
-            traces
-                .iter()
-                .zip(directions)
-                .map(|(tr, v)| {
-                    tr.iter()
-                        .flat_map(|&(g, coef)| [(g[0], coef * v[0]), (g[1], coef * v[1])])
+            projected(traces, directions)
+                .into_iter()
+                .map(|row| {
+                    row.into_iter()
                         .filter(|e| e.1 != 0.0)
                         .map(|(d, coef)| match self.index[d] {
                             usize::MAX => None,

@@ -265,10 +265,7 @@ impl TrackShape {
 /// assembled in (review of 2026-11-29: a rim traction made the positions differ and the ring
 /// wear 0.5 % unevenly, in silence).
 fn refuse_ring_loads(problem: &Problem, body2: &ElasticBody) -> Result<(), ProblemError> {
-    let c = problem.spec.contact.as_ref().expect("checked");
-    let b2 = problem
-        .body_index(&c.target_body)
-        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
+    let (b2, _) = super::target_edge(problem, body2)?;
     let plate: Vec<&str> = problem.spec.plate.iter().map(|p| p.edge.as_str()).collect();
     let loaded = problem
         .load_vector(b2, body2, &plate)?
@@ -293,10 +290,7 @@ fn refuse_ring_loads(problem: &Problem, body2: &ElasticBody) -> Result<(), Probl
 /// straight.
 pub fn track_shape(problem: &Problem, body2: &ElasticBody) -> Result<TrackShape, ProblemError> {
     let c = problem.spec.contact.as_ref().expect("checked");
-    let b2 = problem
-        .body_index(&c.target_body)
-        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
-    let edge = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?;
+    let (_, edge) = super::target_edge(problem, body2)?;
     if !super::closed_loop(body2, edge) {
         return Ok(TrackShape::Straight);
     }
@@ -550,11 +544,7 @@ fn body2_track_dofs(
     body2: &ElasticBody,
     reach: [f64; 2],
 ) -> Result<usize, ProblemError> {
-    let c = problem.spec.contact.as_ref().expect("checked");
-    let b2 = problem
-        .body_index(&c.target_body)
-        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
-    let edge = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?;
+    let (_, edge) = super::target_edge(problem, body2)?;
     let inside = edge
         .iter()
         .filter(|&&(element, local)| {

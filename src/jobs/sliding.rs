@@ -100,10 +100,7 @@ fn track_probes(
     shape: TrackShape,
 ) -> Result<Vec<(String, f64)>, ProblemError> {
     let c = problem.spec.contact.as_ref().expect("checked");
-    let b2 = problem
-        .body_index(&c.target_body)
-        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
-    let edge = problem.named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?;
+    let (_, edge) = crate::contact::target_edge(problem, body2)?;
     let mut out = Vec::new();
     for (name, probe) in problem
         .spec
@@ -155,13 +152,7 @@ fn ring_elements(
     problem: &Problem,
     body2: &crate::elasticity::ElasticBody,
 ) -> Result<usize, ProblemError> {
-    let c = problem.spec.contact.as_ref().expect("checked");
-    let b2 = problem
-        .body_index(&c.target_body)
-        .map_err(|_| problem.error("contact.target_body", "no such body"))?;
-    Ok(problem
-        .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
-        .len())
+    Ok(crate::contact::target_edge(problem, body2)?.1.len())
 }
 
 /// On a closed track a step unit is one turn: `wear.step_time` must be the time of one turn

@@ -116,8 +116,9 @@ mod tests {
     use crate::geometry::{Block, EdgeShape};
     use crate::mesh::{Mesh, MeshBlock};
 
-    #[test]
-    fn every_edge_point_turns_with_the_rotation() {
+    /// A block with an arc edge: the arc checks that its centre moves with the corners (a
+    /// forgotten centre would bend the edge away from its moved ends).
+    fn arc_mesh() -> Mesh {
         let block = Block::new(
             [[0.0, 0.0], [10.0, 0.0], [10.0, 5.0], [0.0, 5.0]],
             [
@@ -128,14 +129,19 @@ mod tests {
             ],
         )
         .unwrap();
-        let mesh = Mesh::build(vec![MeshBlock {
+        Mesh::build(vec![MeshBlock {
             block,
             u_lines: vec![0.0, 0.3, 0.7, 1.0],
             v_lines: vec![0.0, 0.5, 1.0],
             material: 0,
             edge_names: [None, None, None, None],
         }])
-        .unwrap();
+        .unwrap()
+    }
+
+    #[test]
+    fn every_edge_point_turns_with_the_rotation() {
+        let mesh = arc_mesh();
         let (center, angle) = ([3.0, -7.0], 0.7f64);
         let turned = mesh.rotated(center, angle);
         for e in 0..mesh.elements.len() {
@@ -157,26 +163,7 @@ mod tests {
 
     #[test]
     fn every_edge_point_moves_by_the_translation() {
-        // An arc edge checks that the centre moves with the corners (a forgotten centre
-        // would bend the edge away from its translated ends).
-        let block = Block::new(
-            [[0.0, 0.0], [10.0, 0.0], [10.0, 5.0], [0.0, 5.0]],
-            [
-                EdgeShape::ArcAbout([5.0, 100.0]),
-                EdgeShape::Straight,
-                EdgeShape::Straight,
-                EdgeShape::Straight,
-            ],
-        )
-        .unwrap();
-        let mesh = Mesh::build(vec![MeshBlock {
-            block,
-            u_lines: vec![0.0, 0.3, 0.7, 1.0],
-            v_lines: vec![0.0, 0.5, 1.0],
-            material: 0,
-            edge_names: [None, None, None, None],
-        }])
-        .unwrap();
+        let mesh = arc_mesh();
         let by = [2.5, -1.0];
         let moved = mesh.translated(by);
         for e in 0..mesh.elements.len() {
