@@ -4,5 +4,6 @@ pub mod driver;
 pub mod heat;
 mod run;
 pub mod sliding;
+pub mod sliding_steady;
 pub mod sweep;
 pub mod validate;

@@ -1,7 +1,8 @@
-//! Steady worn states without time integration: the exact semismooth Newton solve, and the paper's §6 methods (monotonic and averaged shapes, spline and penalty iterations), and the steady state with heat.
+//! Steady worn states without time integration: the exact semismooth Newton solve, and the paper's §6 methods (monotonic and averaged shapes, spline and penalty iterations), and the steady state with heat, and the steady state of sliding pairs (where one exists).
 
 pub mod monotonic_shape;
 pub mod paper_steady;
+pub mod sliding;
 pub mod spline_method;
 pub mod steady;
 pub mod thermal;

@@ -315,6 +315,19 @@ impl PyProblem {
     /// Steady state: summary JSON text, with "probes" (name → contact point index) added.
     fn _steady(&self, py: Python<'_>) -> PyResult<String> {
         let p = self.model(py)?;
+        if wearfem::jobs::sliding::is_sliding(p) {
+            // A ring turning under body 1 (a reciprocating stroke is refused with the reason).
+            let out = py.allow_threads(|| {
+                let steady = wearfem::jobs::sliding_steady::steady(p)?;
+                if steady.state.status != wearfem::steady::SteadyStatus::Solved {
+                    return Err(JobError::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e})", steady.state.status, steady.state.wear_residual)));
+                }
+                let mut summary = steady.summary(p);
+                summary["probe_points"] = serde_json::json!(steady.setup.probes);
+                Ok(summary)
+            });
+            return out.map(|v| v.to_string()).map_err(|e| job_error(py, &e));
+        }
         let out = py.allow_threads(|| {
             driver::steady(p).map(|(state, contact, seconds)| {
                 let warnings = if state.status == wearfem::steady::SteadyStatus::Solved {

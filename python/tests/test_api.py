@@ -1,5 +1,6 @@
 """The Python API: errors, overrides, round trips, pickling."""
 
+import math
 import pickle
 
 import numpy as np
@@ -432,3 +433,21 @@ def test_sliding_pairs_run_from_python_with_archards_volumes():
     with pytest.raises(wearfem.WearfemError) as e:
         tribometer.run(steps=2)
     assert e.value.key == "contact.pairs"
+
+
+def test_a_turning_rings_steady_state_from_python():
+    """Issue 29: the block on a ring turning under it has a steady state. The block's face is
+    flat and its plate does not tilt, so the steady pressure is uniform, F/(L t), and the ring
+    wears evenly by k₂ F/(2πR t) per metre (closed forms; 1e-9: the Newton solve's round-off).
+    The tribometer's reciprocating stroke has none, and says so by key."""
+    ring = wearfem.Problem.builtin("block-on-ring")
+    steady = ring.steady()
+    assert steady.converged
+    assert steady.p_plus == pytest.approx(133.4 / (6.35 * 15.75), rel=1e-9)
+    per_metre = 1.0e-8 * 133.4 / (15.75 * 2.0 * math.pi * 17.5)
+    assert steady["track"]["body2_depth_per_metre"] == pytest.approx(per_metre, rel=1e-9)
+    assert steady["track"]["position_spread"] < 1e-6
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.Problem.builtin("tribometer").steady()
+    assert e.value.key == "contact.pairs"
+    assert "no periodic steady state" in str(e.value)

@@ -445,6 +445,12 @@ class Problem:
 
         ``method``: "exact" (Newton on the steady-state conditions) is the only one so far.
         A solve that does not converge is returned with its ``status``, not raised.
+
+        Sliding pairs (``contact.pairs = "sliding"``): a ring turning under body 1 has a
+        steady state, and ``result["track"]`` gives its even wear (``body2_depth_per_turn``,
+        ``body2_depth_per_metre``, mm) and ``position_spread``; one that does not converge
+        raises RuntimeError. A reciprocating stroke has none: WearfemError, key
+        ``contact.pairs`` (docs/sliding.md).
         """
         if method != "exact":
             raise ValueError(f'method must be "exact", got {method!r}')

@@ -298,7 +298,7 @@ pub const STROKE_LIMIT: f64 = 0.1;
 /// Warnings about what the model leaves out, for `run` and `steady`: a reciprocating stroke
 /// that is not small against the contact edge (the contact pairs never move), and body 2
 /// wearing under monotonic sliding (its wear is kept at the partner points, while in reality
-/// it is spread over the whole track).
+/// it is spread over the whole track); the last two are not said of sliding pairs.
 pub fn model_warnings(
     problem: &Problem,
     contact: &CondensedContact,
@@ -311,6 +311,16 @@ pub fn model_warnings(
     let Some(wear) = problem.spec.wear.as_ref() else {
         return warnings;
     };
+    if problem
+        .spec
+        .contact
+        .as_ref()
+        .is_some_and(|c| c.pairs == "sliding")
+    {
+        // What follows is about the fixed pairs' stand-in for a stroke, which sliding pairs
+        // do not use.
+        return warnings;
+    }
     let x = &contact.points.x;
     let length: f64 = x.windows(2).map(|w| dist(w[0], w[1])).sum();
     let stroke = 2.0 * wear.amplitude;

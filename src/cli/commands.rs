@@ -391,3 +391,40 @@ pub(crate) fn run_sliding(
     }
     Ok(())
 }
+
+/// `wearfem steady` on sliding pairs: a ring turning under body 1 (the reciprocating stroke is
+/// refused with the reason, `wearfem::steady_state::sliding`).
+pub(crate) fn steady_sliding(
+    p: &wearfem::problem::Problem,
+    out: &Path,
+    vtk: bool,
+) -> Result<(), Failure> {
+    if vtk {
+        return Err(Failure::Input(format!("{}: ParaView files of sliding pairs are not written yet; run without --vtk (and without output.vtk)", p.file)));
+    }
+    let steady = wearfem::jobs::sliding_steady::steady(p)?;
+    let state = &steady.state;
+    if state.status != wearfem::steady::SteadyStatus::Solved {
+        // Nothing from an unconverged iteration is written as a result.
+        return Err(Failure::Compute(format!("the steady-state iteration did not converge ({:?}, wear residual {:.3e}); nothing was written. Run the time integration (wearfem run) instead", state.status, state.wear_residual)));
+    }
+    let contact = &steady.setup.contact.contacts[0];
+    let summary = steady.summary(p);
+    wearfem::output::write_steady_summary(out, p, contact, state, &summary)?;
+    let peak = state.p_plus.iter().fold(0.0f64, |a, &b| a.max(b));
+    println!(
+        "{}: steady state of a ring turning under body 1 ({} positions a turn), {} iterations, {:.4} s (set-up included); peak pressure {:.4} MPa, body 2 worn evenly by {:.4e} mm a turn ({:.4e} mm/m) → {}",
+        p.file,
+        steady.setup.contact.len(),
+        state.iterations,
+        steady.seconds,
+        peak,
+        steady.body2_depth_per_turn,
+        steady.body2_depth_per_turn / (steady.turn * 1e-3),
+        out.display()
+    );
+    for w in summary["warnings"].as_array().into_iter().flatten() {
+        eprintln!("{}", w.as_str().unwrap_or_default());
+    }
+    Ok(())
+}

@@ -474,6 +474,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             if method != SteadyMethod::Exact {
                 return steady_by(&p, method, settings, &out, wants_vtk(vtk, &p));
             }
+            if wearfem::jobs::sliding::is_sliding(&p) {
+                return commands::steady_sliding(&p, &out, wants_vtk(vtk, &p));
+            }
             let (state, contact, seconds, heat) = driver::steady_with_heat(&p)?;
             if state.status != wearfem::steady::SteadyStatus::Solved {
                 // Nothing from an unconverged iteration is written as a result.

@@ -55,7 +55,7 @@ pub fn require_fixed_pairs(problem: &Problem, what: &str) -> Result<(), ProblemE
     if is_sliding(problem) {
         return Err(problem.error(
             "contact.pairs",
-            format!("is \"sliding\", and {what} is only built for fixed pairs so far; `wearfem run` (Python: `Problem.run_sliding`) integrates sliding pairs (the steady state of a finite stroke and parameter studies are not built for them yet)"),
+            format!("is \"sliding\", and {what} is only built for fixed pairs so far; `wearfem run` (Python: `Problem.run_sliding`) integrates sliding pairs, `wearfem steady` (Python: `Problem.steady`) finds the steady state of a ring turning under body 1 (a reciprocating stroke has none), and parameter studies are not built for them yet"),
         ));
     }
     Ok(())
@@ -88,6 +88,8 @@ fn settings(problem: &Problem, steps: Option<usize>) -> Result<SlidingSettings, 
         first_direction: direction(problem)?,
         probes: vec![],
         track_probes: vec![],
+        tolerance: spec.tolerance,
+        max_iterations: spec.max_iterations,
     })
 }
 
@@ -173,8 +175,27 @@ fn check_turn(
     Ok(())
 }
 
-/// Run the wear integration of a sliding-pairs problem.
-pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobError> {
+/// A sliding-pairs problem set up: every position condensed and its solver built, the
+/// probes found; what [`wear`] integrates and [`crate::jobs::sliding_steady`] solves on.
+pub struct SlidingSetup {
+    /// The run's settings (probes filled in).
+    pub settings: SlidingSettings,
+    /// The positions' condensed contacts.
+    pub contact: SlidingContact,
+    /// One contact solver per position (in `contact.stroke.positions` order).
+    pub solvers: Vec<ContactSolver>,
+    /// Probe names on body 1 and their contact point indices.
+    pub probes: Vec<(String, usize)>,
+    /// Probe names on body 2 and their track coordinates (mm).
+    pub track_probes: Vec<(String, f64)>,
+    /// Seconds spent on the FE set-up and the positions' condensation.
+    pub setup_seconds: f64,
+    /// The names of body 1 and body 2.
+    pub body_names: [String; 2],
+}
+
+/// Set up a sliding-pairs problem (`steps` overrides the duration).
+pub fn setup(problem: &Problem, steps: Option<usize>) -> Result<SlidingSetup, JobError> {
     crate::contact::check_settings(problem)?;
     let mut settings = settings(problem, steps)?;
     let start = Instant::now();
@@ -209,15 +230,36 @@ pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobEr
     on_body1.spec.probes.retain(|_, p| p.body != c.target_body);
     check_contact_probes(&on_body1, &contact.contacts[0])?;
     let method = method(problem)?;
-    let mut solvers: Vec<ContactSolver> = contact
+    let solvers: Vec<ContactSolver> = contact
         .contacts
         .iter()
         .map(|c| ContactSolver::new(c, method))
         .collect();
-    let setup_seconds = start.elapsed().as_secs_f64();
     let probes = contact_probes(&on_body1, &contact.contacts[0]);
     settings.probes = probes.iter().map(|p| p.1).collect();
     settings.track_probes = track_probes.iter().map(|p| p.1).collect();
+    Ok(SlidingSetup {
+        settings,
+        contact,
+        solvers,
+        probes,
+        track_probes,
+        setup_seconds: start.elapsed().as_secs_f64(),
+        body_names: [c.body.clone(), c.target_body.clone()],
+    })
+}
+
+/// Run the wear integration of a sliding-pairs problem.
+pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobError> {
+    let SlidingSetup {
+        settings,
+        contact,
+        mut solvers,
+        probes,
+        track_probes,
+        setup_seconds,
+        body_names,
+    } = setup(problem, steps)?;
     let start = Instant::now();
     let history = sliding::run(&settings, &contact, &mut solvers);
     let run_seconds = start.elapsed().as_secs_f64();
@@ -230,7 +272,7 @@ pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobEr
         track_probes,
         setup_seconds,
         run_seconds,
-        body_names: [c.body.clone(), c.target_body.clone()],
+        body_names,
     })
 }
 
@@ -387,7 +429,53 @@ impl SlidingRun {
                 "x": numbers(&track_x),
                 "wear_body2": numbers(&h.track.wear),
             },
+            "steady_state": self.steady_state_json(),
             "warnings": self.warnings(problem),
         })
+    }
+
+    /// Whether a periodic steady state exists for this run ([`crate::steady_state::sliding`])
+    /// and, where none does, what the run tends to: the track's deepest point against the
+    /// depth a flat-bottomed trough gains per half period (β̃₂F/t, for a = b = 1), and the
+    /// steepest slope of the track, which grows without bound at its ends.
+    fn steady_state_json(&self) -> Value {
+        use crate::steady_state::sliding::FiniteStrokeSteady;
+        let case = FiniteStrokeSteady::of(self.settings.monotonic, self.settings.laws[1].is_some());
+        let Some(why) = case.refusal() else {
+            return json!({"exists": true, "computed_by": "wearfem steady"});
+        };
+        let steps = &self.history.steps;
+        let deepening = match steps.len() {
+            n if n >= 2 => {
+                let (a, b) = (&steps[n - 2], &steps[n - 1]);
+                let half_periods = (b.half_period - a.half_period) as f64;
+                Some((b.largest_wear[1] - a.largest_wear[1]) / half_periods)
+            }
+            _ => None,
+        };
+        let trough = self.settings.laws[1]
+            .filter(|l| l.a == 1.0 && l.b == 1.0)
+            .map(|l| l.beta * self.load_per_thickness());
+        let track = &self.history.track;
+        let centres = track.centres();
+        let slope = (centres.windows(2).zip(track.wear.windows(2)))
+            .map(|(x, w)| ((w[1] - w[0]) / (x[1] - x[0])).abs())
+            .fold(0.0f64, f64::max);
+        json!({
+            "exists": false,
+            "why": why,
+            "track_deepest_per_half_period": deepening.map(number),
+            "flat_trough_per_half_period": trough.map(number),
+            "track_steepest_slope": number(slope),
+        })
+    }
+
+    /// The normal load per unit thickness the contact carries, F/t in N/mm: the first
+    /// position's pressure of the last cycle integrated over body 1's contact edge.
+    fn load_per_thickness(&self) -> f64 {
+        let weight = &self.contact.contacts[0].points.weight;
+        self.history.last_cycle[0]
+            .first()
+            .map_or(0.0, |p| weight.iter().zip(p).map(|(w, p)| w * p).sum())
     }
 }

@@ -419,10 +419,21 @@ pub fn write_steady(
     seconds: f64,
     warnings: &[String],
 ) -> Result<(), OutputError> {
+    let summary = steady_summary(problem, contact, state, seconds, warnings);
+    write_steady_summary(dir, problem, contact, state, &summary)
+}
+
+/// [`write_steady`] with its summary given (a job that adds to [`steady_summary`]'s).
+pub fn write_steady_summary(
+    dir: &Path,
+    problem: &crate::problem::Problem,
+    contact: &crate::contact::CondensedContact,
+    state: &crate::steady::SteadyState,
+    summary: &Value,
+) -> Result<(), OutputError> {
     let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
     let p_minus = (!state.p_minus.is_empty()).then_some(&state.p_minus[..]);
-    let summary = steady_summary(problem, contact, state, seconds, warnings);
-    write_json(dir, "summary.json", &summary)?;
+    write_json(dir, "summary.json", summary)?;
     Profiles {
         x: &x,
         p_plus: &state.p_plus,
