@@ -382,18 +382,58 @@ fn the_tribometer_runs_through_the_binary_and_other_jobs_refuse_sliding_pairs() 
             "{body}: {volume}"
         );
     }
-    for (args, key) in [
-        (vec!["steady", "tribometer"], "contact.pairs"),
-        (vec!["run", "tribometer", "--vtk"], "ParaView"),
-    ] {
-        let mut args = args;
-        let refused = dir.join("refused");
-        args.extend(["--out", refused.to_str().unwrap()]);
-        let result = wearfem(&args);
-        assert_eq!(result.status.code(), Some(2), "{args:?}");
-        let stderr = String::from_utf8_lossy(&result.stderr);
-        assert!(stderr.contains(key), "{args:?}: {stderr}");
+    // ParaView: the worn track and slider of every recorded step and of the last, the
+    // track drawn on the flat's top (z = 0) with the wear summary.json gives.
+    let vtk = dir.join("vtk");
+    let with_vtk = wearfem(&[
+        "run",
+        "tribometer",
+        "--steps",
+        "6",
+        "--vtk",
+        "--out",
+        vtk.to_str().unwrap(),
+    ]);
+    assert!(with_vtk.status.success());
+    let pvd = std::fs::read_to_string(vtk.join("results.pvd")).unwrap();
+    assert!(pvd.contains("vtk/track_0000.vtu") && pvd.contains("vtk/slider_0000.vtu"));
+    let last = pvd
+        .lines()
+        .filter_map(|l| l.split("file=\"").nth(1))
+        .rfind(|f| f.starts_with("vtk/track_"))
+        .unwrap()
+        .trim_end_matches("\"/>");
+    let track = std::fs::read_to_string(vtk.join(last)).unwrap();
+    let array = |name: &str| -> Vec<f64> {
+        let start = track.find(&format!("Name=\"{name}\"")).unwrap();
+        let body = &track[start..];
+        let body = &body[body.find('>').unwrap() + 1..body.find("</DataArray>").unwrap()];
+        body.split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect()
+    };
+    let written = array("wear_body2");
+    let expected: Vec<f64> = summary["track"]["wear_body2"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    assert_eq!(written.len(), expected.len());
+    for (a, b) in written.iter().zip(&expected) {
+        assert!((a - b).abs() <= 1e-12 * b.abs().max(1e-30), "{a} {b}");
     }
+    let points = array("Points");
+    assert!(
+        points.chunks(3).all(|p| p[1] == 0.0),
+        "the flat's top is z = 0"
+    );
+    let refused = dir.join("refused");
+    let args = ["steady", "tribometer", "--out", refused.to_str().unwrap()];
+    let result = wearfem(&args);
+    assert_eq!(result.status.code(), Some(2), "{args:?}");
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert!(stderr.contains("contact.pairs"), "{args:?}: {stderr}");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -358,11 +358,11 @@ pub(crate) fn run_sliding(
     steps: Option<usize>,
     vtk: bool,
 ) -> Result<(), Failure> {
-    if vtk {
-        return Err(Failure::Input(format!("{}: ParaView files of sliding pairs are not written yet; run without --vtk (and without output.vtk)", p.file)));
-    }
     let run = wearfem::jobs::sliding::wear(p, steps)?;
     wearfem::report::sliding::write(out, p, &run)?;
+    if vtk {
+        wearfem::vtk::write_sliding(out, &run)?;
+    }
     let h = &run.history;
     let volume = h
         .steps
@@ -400,7 +400,7 @@ pub(crate) fn steady_sliding(
     vtk: bool,
 ) -> Result<(), Failure> {
     if vtk {
-        return Err(Failure::Input(format!("{}: ParaView files of sliding pairs are not written yet; run without --vtk (and without output.vtk)", p.file)));
+        return Err(Failure::Input(format!("{}: ParaView files of a steady state of sliding pairs are not written yet (`wearfem run --vtk` writes the worn track); run without --vtk (and without output.vtk)", p.file)));
     }
     let steady = wearfem::jobs::sliding_steady::steady(p)?;
     let state = &steady.state;

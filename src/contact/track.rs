@@ -39,6 +39,9 @@ use crate::elasticity::ElasticBody;
 use crate::geometry::Point;
 use crate::problem::{Problem, ProblemError};
 
+mod surface;
+pub use surface::track_surface;
+
 /// Body 2's worn profile along its track, in cells of equal width.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Track {

@@ -38,6 +38,8 @@ pub struct SlidingRun {
     pub thickness: f64,
     /// The names of body 1 and body 2.
     pub body_names: [String; 2],
+    /// Body 2's surface at rest at each track cell's centre: point and outward normal.
+    pub track_surface: Vec<([f64; 2], [f64; 2])>,
 }
 
 /// Whether `problem` asks for sliding pairs.
@@ -192,6 +194,8 @@ pub struct SlidingSetup {
     pub setup_seconds: f64,
     /// The names of body 1 and body 2.
     pub body_names: [String; 2],
+    /// Body 2's surface at rest at each track cell's centre: point and outward normal.
+    pub track_surface: Vec<([f64; 2], [f64; 2])>,
 }
 
 /// Set up a sliding-pairs problem (`steps` overrides the duration).
@@ -236,6 +240,9 @@ pub fn setup(problem: &Problem, steps: Option<usize>) -> Result<SlidingSetup, Jo
         .map(|c| ContactSolver::new(c, method))
         .collect();
     let probes = contact_probes(&on_body1, &contact.contacts[0]);
+    let centres = contact.empty_track().centres();
+    let track_surface =
+        crate::contact::track::track_surface(problem, &body2, contact.shape, &centres)?;
     settings.probes = probes.iter().map(|p| p.1).collect();
     settings.track_probes = track_probes.iter().map(|p| p.1).collect();
     Ok(SlidingSetup {
@@ -246,6 +253,7 @@ pub fn setup(problem: &Problem, steps: Option<usize>) -> Result<SlidingSetup, Jo
         track_probes,
         setup_seconds: start.elapsed().as_secs_f64(),
         body_names: [c.body.clone(), c.target_body.clone()],
+        track_surface,
     })
 }
 
@@ -259,6 +267,7 @@ pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobEr
         track_probes,
         setup_seconds,
         body_names,
+        track_surface,
     } = setup(problem, steps)?;
     let start = Instant::now();
     let history = sliding::run(&settings, &contact, &mut solvers);
@@ -273,6 +282,7 @@ pub fn wear(problem: &Problem, steps: Option<usize>) -> Result<SlidingRun, JobEr
         setup_seconds,
         run_seconds,
         body_names,
+        track_surface,
     })
 }
 

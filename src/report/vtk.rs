@@ -21,10 +21,12 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 mod jobs;
+mod sliding;
 pub use jobs::{
     write_contact_job, write_contact_states, write_elastic, write_run, write_steady, ContactState,
     VtkError, PVD_NAME,
 };
+pub use sliding::write_sliding;
 
 /// One body to write: the factorised body, its displacement field and its number (1, 2, …).
 pub struct VtkBody<'a> {
