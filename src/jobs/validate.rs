@@ -267,6 +267,7 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     part_cases::body_volumes(&mut checks)?;
     sliding_cases::trough(&mut checks)?;
     sliding_cases::ring(&mut checks)?;
+    sliding_cases::ring_steady(&mut checks)?;
     sliding_cases::tribometer_volumes(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks

@@ -134,3 +134,51 @@ pub fn tribometer_volumes(checks: &mut Checks) -> Outcome {
     }
     Ok(())
 }
+
+/// The block-on-ring example's steady state (`wearfem steady`) with the plate free to tilt
+/// about a pin 1 mm above the block's face: the block's own wear per turn must be rigid, so
+/// the pressure is linear, p(x) = F/(Lt) (1 − 12 μ h x/L²), and the ring loses k₂ F/(2πRt)
+/// per metre, evenly (module docs of `steady_state::sliding`).
+pub fn ring_steady(checks: &mut Checks) -> Outcome {
+    let p = super::cases::problem(
+        "block-on-ring",
+        &[(
+            "motion = \"vertical\"",
+            "motion = \"vertical_rotation\"\npin = [0.0, 1.0]",
+        )],
+    )?;
+    let steady = crate::jobs::sliding_steady::steady(&p).map_err(|e| fail(&p.file, e))?;
+    if steady.state.status != crate::steady::SteadyStatus::Solved {
+        return Err(fail(&p.file, format!("{:?}", steady.state.status)));
+    }
+    let (length, t, radius, friction, pin) = (6.35, 15.75, 17.5, 0.35, 1.0);
+    let mean = 133.4 / (length * t);
+    let slope = 12.0 * friction * pin / (length * length);
+    let points = &steady.setup.contact.contacts[0].points;
+    let worst = (points.x.iter().zip(&steady.state.p_plus))
+        .map(|(x, p)| mean * (1.0 - slope * x[0]) - p)
+        .max_by(|a, b| a.abs().total_cmp(&b.abs()))
+        .unwrap_or(f64::NAN);
+    push(
+        checks,
+        "sliding.ring_steady_pressure",
+        "block-on-ring tilting about a pin 1 mm above its face, steady state: the pressure's largest departure from the line",
+        "MPa",
+        0.0,
+        "F/(Lt) (1 − 12 μ h x/L²)",
+        worst,
+        Bound::Absolute(1e-6 * mean),
+    );
+    let per_metre = steady.body2_depth_per_turn / (steady.turn * 1e-3);
+    push(
+        checks,
+        "sliding.ring_steady_depth",
+        "block-on-ring steady state: the ring's even depth per metre",
+        "mm/m",
+        1.0e-8 * 133.4 / (std::f64::consts::TAU * radius * t),
+        "k₂ F / (2π R t)",
+        per_metre,
+        Bound::Relative(1e-6),
+    );
+    Ok(())
+}
