@@ -477,7 +477,12 @@ impl CondensedContact {
         let edge2 = problem
             .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
             .to_vec();
-        let t = problem.analysis.thickness();
+        let t = problem.analysis.thickness().ok_or_else(|| {
+            problem.error(
+                "analysis.kind",
+                "contact between axisymmetric bodies is not built yet",
+            )
+        })?;
         // A press fit's loop once gave its start twice, one copy with twice the pressure and
         // the other none, in silence (red team A).
         if closed_loop(body1, &edge1) {

@@ -52,7 +52,10 @@ fn resultant(text: &str, edge: &str) -> [f64; 2] {
         .named_edge(&mesh, 0, edge, "edge")
         .expect("the edge");
     let traction = &problem.tractions(0).expect("tractions")[0];
-    traction.resultant(&mesh, edges, 4, THICKNESS, [0.0, 0.0]).0
+    let analysis = wearfem::material::Analysis::PlaneStress {
+        thickness: THICKNESS,
+    };
+    traction.resultant(&mesh, edges, 4, analysis, [0.0, 0.0]).0
 }
 
 /// The half-width of a circle of radius `radius` about `center` at `offset` from it, measured

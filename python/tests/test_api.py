@@ -443,8 +443,10 @@ def test_a_turning_rings_steady_state_from_python():
     ring = wearfem.Problem.builtin("block-on-ring")
     steady = ring.steady()
     assert steady.converged
-    assert steady.p_plus == pytest.approx(133.4 / (6.35 * 15.75), rel=1e-9)
-    per_metre = 1.0e-8 * 133.4 / (15.75 * 2.0 * math.pi * 17.5)
+    # The load is the top traction (1.3338332917 MPa, 133.4 N to 8 digits) times L t.
+    traction = 1.3338332917
+    assert steady.p_plus == pytest.approx(traction, rel=1e-9)
+    per_metre = 1.0e-8 * traction * 6.35 / (2.0 * math.pi * 17.5)
     assert steady["track"]["body2_depth_per_metre"] == pytest.approx(per_metre, rel=1e-9)
     assert steady["track"]["position_spread"] < 1e-6
     with pytest.raises(wearfem.WearfemError) as e:

@@ -395,10 +395,9 @@ pub fn fixed_plate_load_warning(problem: &Problem, _contact: &CondensedContact) 
     let edges = problem
         .named_edge(&mesh, body, &plate.edge, "plate.edge")
         .ok()?;
-    let thickness = problem.analysis.thickness();
     let p = problem.spec.analysis.p;
     let [fx, fz] = on_plate.iter().fold([0.0; 2], |sum, t| {
-        let (f, _) = t.resultant(&mesh, edges, p, thickness, [0.0; 2]);
+        let (f, _) = t.resultant(&mesh, edges, p, problem.analysis, [0.0; 2]);
         [sum[0] + f[0], sum[1] + f[1]]
     });
     Some(warning(

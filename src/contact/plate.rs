@@ -71,7 +71,6 @@ pub(super) fn plate_modes(
     let mut force = [0.0; 2];
     let mut moment = 0.0;
     let mut load = vec![0.0; modes.len()];
-    let t = problem.analysis.thickness();
     // Every load on body 1 reaches the plate (body 1 is clamped to it): all enter L_k.
     for (k, tr) in problem.tractions(b1)?.iter().enumerate() {
         let edges = problem.named_edge(
@@ -84,7 +83,7 @@ pub(super) fn plate_modes(
             &body1.mesh,
             edges,
             body1.dofs.p,
-            t,
+            problem.analysis,
             |_, _, _, x, trac, w| {
                 force[0] += trac[0] * w;
                 force[1] += trac[1] * w;

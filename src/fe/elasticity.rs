@@ -260,14 +260,23 @@ pub(crate) fn element_stiffness(
     let tab = basis.tabulate(&rule.points, &rule.points);
     let n = basis.n_modes();
     let n_points = nq * nq;
-    let t = analysis.thickness();
     let mut gx = Mat::<f64>::zeros(n, n_points);
     let mut gz = Mat::<f64>::zeros(n, n_points);
+    // Axisymmetric: the hoop strain's row, H[a, q] = N_a/r · √(w_q det J_q 2πr).
+    let axisymmetric = analysis.is_axisymmetric();
+    let mut hoop = Mat::<f64>::zeros(if axisymmetric { n } else { 0 }, n_points);
     for iy in 0..nq {
         for ix in 0..nq {
             let q = iy * nq + ix;
-            let (j, det) = mesh.jacobian(element, rule.points[ix], rule.points[iy]);
-            let scale = (rule.weights[ix] * rule.weights[iy] * det * t).sqrt();
+            let (xi, eta) = (rule.points[ix], rule.points[iy]);
+            let (j, det) = mesh.jacobian(element, xi, eta);
+            // The point itself only where the weight (2πr) or the hoop strain needs it.
+            let x = if axisymmetric {
+                mesh.map(element, xi, eta)
+            } else {
+                [0.0; 2]
+            };
+            let scale = (rule.weights[ix] * rule.weights[iy] * det * analysis.weight(x)).sqrt();
             // Rows of J⁻¹: ∂ξ/∂(x, z) and ∂η/∂(x, z).
             let (dxi_dx, dxi_dz) = (j[1][1] / det, -j[0][1] / det);
             let (deta_dx, deta_dz) = (-j[1][0] / det, j[0][0] / det);
@@ -275,6 +284,10 @@ pub(crate) fn element_stiffness(
                 let (nxi, neta) = (tab.d_xi[a * n_points + q], tab.d_eta[a * n_points + q]);
                 gx[(a, q)] = (nxi * dxi_dx + neta * deta_dx) * scale;
                 gz[(a, q)] = (nxi * dxi_dz + neta * deta_dz) * scale;
+                if axisymmetric {
+                    // Gauss points lie inside the element, never on the axis (r > 0).
+                    hoop[(a, q)] = tab.values[a * n_points + q] / x[0] * scale;
+                }
             }
         }
     }
@@ -282,7 +295,7 @@ pub(crate) fn element_stiffness(
     let zz = &gz * gz.transpose();
     let xz = &gx * gz.transpose();
     let d = material.constitutive(analysis);
-    Mat::from_fn(2 * n, 2 * n, |r, c| {
+    let mut k = Mat::from_fn(2 * n, 2 * n, |r, c| {
         let (a, ca, b, cb) = (r / 2, r % 2, c / 2, c % 2);
         match (ca, cb) {
             (0, 0) => d[0][0] * xx[(a, b)] + d[2][2] * zz[(a, b)],
@@ -290,7 +303,22 @@ pub(crate) fn element_stiffness(
             (0, 1) => d[0][1] * xz[(a, b)] + d[2][2] * xz[(b, a)],
             _ => d[1][0] * xz[(b, a)] + d[2][2] * xz[(a, b)],
         }
-    })
+    });
+    if axisymmetric {
+        // ε_θθ = u_r/r couples to ε_rr and ε_zz by λ and to itself by λ + 2μ.
+        let (lambda, hoop_modulus) = material.hoop_coupling();
+        let hh = &hoop * hoop.transpose();
+        let xh = &gx * hoop.transpose();
+        let zh = &gz * hoop.transpose();
+        for a in 0..n {
+            for b in 0..n {
+                k[(2 * a, 2 * b)] += hoop_modulus * hh[(a, b)] + lambda * (xh[(a, b)] + xh[(b, a)]);
+                k[(2 * a, 2 * b + 1)] += lambda * zh[(b, a)];
+                k[(2 * a + 1, 2 * b)] += lambda * zh[(a, b)];
+            }
+        }
+    }
+    k
 }
 
 fn condense(k: &Mat<f64>, nb: usize, element: usize) -> Result<CondensedElement, ElasticityError> {
@@ -334,7 +362,11 @@ impl ElasticBody {
         for element in 0..mesh.elements.len() {
             let material = mesh.elements[element].material;
             let nq = quadrature_points(&mesh, element, discretisation.p);
-            let key = geometry_key(&mesh, element, material, nq);
+            let mut key = geometry_key(&mesh, element, material, nq);
+            if analysis.is_axisymmetric() {
+                // Elements alike up to a translation along the axis only: the radius enters.
+                key.push(mesh.map(element, -1.0, -1.0)[0].to_bits() as i64);
+            }
             let id = match cache.get(&key) {
                 Some(&id) => id,
                 None => {
@@ -363,7 +395,14 @@ impl ElasticBody {
             fixed[d] = true;
             prescribed[d] = value;
         }
-        if !prevents_rigid_motion(&mesh, &dofs, &fixed, &constraints.springs) {
+        let held = if analysis.is_axisymmetric() {
+            // A body of revolution has one rigid motion, along its axis: a radial
+            // translation or a turn would strain its hoops.
+            holds_axial_motion(&dofs, &fixed, &constraints.springs, &mesh)
+        } else {
+            prevents_rigid_motion(&mesh, &dofs, &fixed, &constraints.springs)
+        };
+        if !held {
             // The factorisation alone would not catch it: on curved elements round-off leaves
             // the rigid-body pivots tiny but positive, and the solve returns nonsense.
             return Err(ElasticityError::Singular {
@@ -374,7 +413,7 @@ impl ElasticBody {
         let springs: Vec<SpringBlock> = constraints
             .springs
             .iter()
-            .map(|s| SpringBlock::new(&mesh, &dofs, &basis, analysis.thickness(), s))
+            .map(|s| SpringBlock::new(&mesh, &dofs, &basis, analysis, s))
             .collect();
         let mut values = assemble(&mesh, &dofs, &pattern, &element_type, &types);
         for spring in &springs {
@@ -523,12 +562,11 @@ impl ElasticBody {
                 .zip(&u.boundary)
                 .map(|(f, v)| f * v)
                 .sum::<f64>();
-        let thickness = self.analysis.thickness();
         elastic
             + self
                 .springs
                 .iter()
-                .map(|s| SpringBlock::new(&self.mesh, &self.dofs, &self.basis, thickness, s))
+                .map(|s| SpringBlock::new(&self.mesh, &self.dofs, &self.basis, self.analysis, s))
                 .map(|block| block.energy(&u.boundary))
                 .sum::<f64>()
     }
@@ -620,6 +658,18 @@ fn prevents_rigid_motion(mesh: &Mesh, dofs: &DofMap, fixed: &[bool], springs: &[
     let trace = gram[0][0] + gram[1][1] + gram[2][2];
     // det/trace³ is scale-free and bounded by 1/27; 1e-12 only rejects true rank loss.
     trace > 0.0 && det / trace.powi(3) > 1e-12
+}
+
+/// Whether a held z dof or a spring bed with a z component holds a body of revolution's one
+/// rigid motion, its translation along the axis.
+fn holds_axial_motion(dofs: &DofMap, fixed: &[bool], springs: &[Spring], mesh: &Mesh) -> bool {
+    let held = (0..mesh.vertices.len()).any(|v| fixed[dofs.vertex_dof(v, 1)]);
+    held || springs.iter().any(|s| {
+        [-1.0, 0.0, 1.0].iter().any(|&t| {
+            let (_, n) = mesh.edge_frame(s.element, s.local, t);
+            (s.normal > 0.0 && n[1].abs() > 1e-9) || (s.tangential > 0.0 && n[0].abs() > 1e-9)
+        })
+    })
 }
 
 /// Add every element's condensed stiffness into the pattern's value array, block by block.

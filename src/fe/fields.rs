@@ -12,6 +12,9 @@ pub struct PointValues {
     pub strain: [f64; 3],
     /// Stress [σ_xx, σ_zz, σ_xz], MPa.
     pub stress: [f64; 3],
+    /// Axisymmetric bodies: the hoop strain ε_θθ = u_r/r and stress σ_θθ (MPa); zero in a
+    /// plane analysis.
+    pub hoop: [f64; 2],
 }
 
 impl ElasticBody {
@@ -47,10 +50,33 @@ impl ElasticBody {
         for (r, row) in d.iter().enumerate() {
             stress[r] = row.iter().zip(&strain).map(|(a, b)| a * b).sum();
         }
+        let mut hoop = [0.0; 2];
+        if self.analysis.is_axisymmetric() {
+            let r = self.mesh.map(element, xi, eta)[0];
+            let size = self
+                .mesh
+                .vertices
+                .iter()
+                .fold(0.0f64, |a, v| a.max(v[0].abs()));
+            // On the axis u_r = 0 (held there), and u_r/r tends to ∂u_r/∂r.
+            let hoop_strain = if r > 1e-12 * size {
+                disp[0] / r
+            } else {
+                grad[0][0]
+            };
+            let (lambda, modulus) = material.hoop_coupling();
+            stress[0] += lambda * hoop_strain;
+            stress[1] += lambda * hoop_strain;
+            hoop = [
+                hoop_strain,
+                lambda * (strain[0] + strain[1]) + modulus * hoop_strain,
+            ];
+        }
         PointValues {
             displacement: disp,
             strain,
             stress,
+            hoop,
         }
     }
 

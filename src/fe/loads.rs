@@ -4,6 +4,7 @@
 use crate::basis::shape_1d;
 use crate::dofs::DofMap;
 use crate::geometry::{bisect, Point};
+use crate::material::Analysis;
 use crate::mesh::Mesh;
 use crate::quadrature::gauss_legendre;
 
@@ -179,20 +180,28 @@ impl Traction {
         ]
     }
 
-    /// Visit every quadrature point of this traction: (element, local edge, t, x, T, dS·thickness).
+    /// Visit every quadrature point of this traction: (element, local edge, t, x, T, dS times
+    /// the analysis' weight at x: the thickness, or 2πr).
     pub fn for_each_point(
         &self,
         mesh: &Mesh,
         edges: &[(usize, usize)],
         p: usize,
-        thickness: f64,
+        analysis: Analysis,
         mut visit: impl FnMut(usize, usize, f64, Point, Point, f64),
     ) {
         for &(element, local) in edges {
             for (t, ds) in edge_quadrature(mesh, element, local, self.window, p + 4) {
                 let x = mesh.point_on_edge(element, local, t);
                 let (_, normal) = mesh.edge_frame(element, local, t);
-                visit(element, local, t, x, self.vector(x, normal), ds * thickness);
+                visit(
+                    element,
+                    local,
+                    t,
+                    x,
+                    self.vector(x, normal),
+                    ds * analysis.weight(x),
+                );
             }
         }
     }
@@ -203,12 +212,12 @@ impl Traction {
         mesh: &Mesh,
         edges: &[(usize, usize)],
         p: usize,
-        thickness: f64,
+        analysis: Analysis,
         pivot: Point,
     ) -> (Point, f64) {
         let mut force = [0.0; 2];
         let mut moment = 0.0;
-        self.for_each_point(mesh, edges, p, thickness, |_, _, _, x, t, w| {
+        self.for_each_point(mesh, edges, p, analysis, |_, _, _, x, t, w| {
             force[0] += t[0] * w;
             force[1] += t[1] * w;
             moment += ((x[1] - pivot[1]) * t[0] - (x[0] - pivot[0]) * t[1]) * w;
@@ -223,7 +232,7 @@ impl Traction {
         edges: &[(usize, usize)],
         dofs: &DofMap,
         basis: &crate::basis::QuadBasis,
-        thickness: f64,
+        analysis: Analysis,
         load: &mut [f64],
     ) {
         let p = dofs.p;
@@ -235,7 +244,7 @@ impl Traction {
             mesh,
             edges,
             p,
-            thickness,
+            analysis,
             |element, local, t, _, traction, w| {
                 if last.as_ref().map(|l| (l.0, l.1)) != Some((element, local)) {
                     last = Some((

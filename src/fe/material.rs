@@ -23,14 +23,37 @@ pub enum Analysis {
         /// Thickness of the reported slice, mm.
         thickness: f64,
     },
+    /// A body of revolution: x is the radius r ≥ 0, z the axis, and the hoop strain u_r/r
+    /// joins the plane ones; integrals are over the whole circle (2πr), so forces are in N
+    /// for the whole circumference.
+    Axisymmetric,
 }
 
 impl Analysis {
-    /// Out-of-plane thickness t, mm: every area integral is multiplied by it.
-    pub fn thickness(&self) -> f64 {
+    /// Out-of-plane thickness t of a plane analysis, mm (None for an axisymmetric one, whose
+    /// out-of-plane measure 2πr changes from point to point: [`Analysis::weight`]).
+    pub fn thickness(&self) -> Option<f64> {
+        match *self {
+            Analysis::PlaneStress { thickness } | Analysis::PlaneStrain { thickness } => {
+                Some(thickness)
+            }
+            Analysis::Axisymmetric => None,
+        }
+    }
+
+    /// What an area (or line) integral is multiplied by at the point `x` (mm): the
+    /// thickness t of a plane analysis, the circumference 2πr (r = x[0]) of an axisymmetric
+    /// one.
+    pub fn weight(&self, x: [f64; 2]) -> f64 {
         match *self {
             Analysis::PlaneStress { thickness } | Analysis::PlaneStrain { thickness } => thickness,
+            Analysis::Axisymmetric => std::f64::consts::TAU * x[0],
         }
+    }
+
+    /// Whether the hoop strain u_r/r is part of the strain (axisymmetric).
+    pub fn is_axisymmetric(&self) -> bool {
+        matches!(self, Analysis::Axisymmetric)
     }
 }
 
@@ -52,7 +75,9 @@ impl Material {
                 let c = e / (1.0 - nu * nu);
                 (c, c * nu, c * (1.0 - nu) / 2.0)
             }
-            Analysis::PlaneStrain { .. } => {
+            // An axisymmetric body's in-plane part is plane strain's; its hoop couplings are
+            // [`Material::hoop_coupling`].
+            Analysis::PlaneStrain { .. } | Analysis::Axisymmetric => {
                 let (lambda, mu) = self.lame_parameters();
                 (lambda + 2.0 * mu, lambda, mu)
             }
@@ -65,8 +90,17 @@ impl Material {
     pub fn effective_modulus(&self, analysis: Analysis) -> f64 {
         match analysis {
             Analysis::PlaneStress { .. } => self.young,
-            Analysis::PlaneStrain { .. } => self.young / (1.0 - self.poisson * self.poisson),
+            Analysis::PlaneStrain { .. } | Analysis::Axisymmetric => {
+                self.young / (1.0 - self.poisson * self.poisson)
+            }
         }
+    }
+
+    /// The axisymmetric constitutive law's hoop part (MPa): σ_θθ = λ (ε_rr + ε_zz) +
+    /// (λ + 2μ) ε_θθ, and ε_θθ adds λ ε_θθ to σ_rr and σ_zz. Returns (λ, λ + 2μ).
+    pub fn hoop_coupling(&self) -> (f64, f64) {
+        let (lambda, mu) = self.lame_parameters();
+        (lambda, lambda + 2.0 * mu)
     }
 }
 
@@ -125,7 +159,9 @@ impl Material {
     pub fn thermal_stress_per_kelvin(&self, analysis: Analysis, expansion: f64) -> [f64; 3] {
         let free_strain = match analysis {
             Analysis::PlaneStress { .. } => expansion,
-            Analysis::PlaneStrain { .. } => (1.0 + self.poisson) * expansion,
+            Analysis::PlaneStrain { .. } | Analysis::Axisymmetric => {
+                (1.0 + self.poisson) * expansion
+            }
         };
         let d = self.constitutive(analysis);
         [
@@ -140,7 +176,9 @@ impl Material {
     pub fn free_thermal_strain(&self, analysis: Analysis, expansion: f64) -> f64 {
         match analysis {
             Analysis::PlaneStress { .. } => expansion,
-            Analysis::PlaneStrain { .. } => (1.0 + self.poisson) * expansion,
+            Analysis::PlaneStrain { .. } | Analysis::Axisymmetric => {
+                (1.0 + self.poisson) * expansion
+            }
         }
     }
 }

@@ -98,26 +98,39 @@ impl Problem {
             message,
         };
         let a = &spec.analysis;
-        if !(a.thickness >= MIN_THICKNESS && a.thickness <= MAX_COORDINATE) {
-            return Err(err(
+        let thickness = || {
+            match a.thickness {
+            Some(t) if (MIN_THICKNESS..=MAX_COORDINATE).contains(&t) => Ok(t),
+            Some(t) => Err(err(
                 "analysis.thickness",
-                format!(
-                    "must be a length from {MIN_THICKNESS:e} to {MAX_COORDINATE:e} mm, got {:?}",
-                    a.thickness
-                ),
-            ));
+                format!("must be a length from {MIN_THICKNESS:e} to {MAX_COORDINATE:e} mm, got {t:?}"),
+            )),
+            None => Err(err(
+                "analysis.thickness",
+                format!("is required for kind = \"{}\" (mm: the plate's thickness, or the slice of a long body that forces are given for)", a.kind),
+            )),
         }
+        };
         let analysis = match a.kind.as_str() {
             "plane_stress" => Analysis::PlaneStress {
-                thickness: a.thickness,
+                thickness: thickness()?,
             },
             "plane_strain" => Analysis::PlaneStrain {
-                thickness: a.thickness,
+                thickness: thickness()?,
             },
+            "axisymmetric" => {
+                if a.thickness.is_some() {
+                    return Err(err(
+                        "analysis.thickness",
+                        "a body of revolution has no thickness: its integrals are over the whole circle (2πr), and its loads and forces are for the whole circumference; remove the key".to_string(),
+                    ));
+                }
+                Analysis::Axisymmetric
+            }
             other => {
                 return Err(err(
                     "analysis.kind",
-                    format!("must be \"plane_stress\" or \"plane_strain\", got \"{other}\""),
+                    format!("must be \"plane_stress\", \"plane_strain\" or \"axisymmetric\", got \"{other}\""),
                 ))
             }
         };
@@ -257,7 +270,8 @@ impl Problem {
             let key = format!("bodies[{b}].tractions[{k}]");
             let edges = self.named_edge(mesh, b, &traction.edge, &format!("{key}.edge"))?;
             let mut length = 0.0;
-            traction.for_each_point(mesh, edges, 1, 1.0, |_, _, _, _, _, ds| length += ds);
+            let unit = Analysis::PlaneStrain { thickness: 1.0 };
+            traction.for_each_point(mesh, edges, 1, unit, |_, _, _, _, _, ds| length += ds);
             if length <= 0.0 && traction.window.is_some() {
                 return Err(self.error(
                     format!("{key}.window"),
@@ -343,6 +357,10 @@ impl Problem {
                 }
             }
         };
+        if self.analysis.is_axisymmetric() {
+            // First, so that a support contradicting it is the one named.
+            self.hold_axis(b, mesh, dofs, basis, &mut hold)?;
+        }
         for (k, s) in self.spec.bodies[b].supports.iter().enumerate() {
             let key = format!("bodies[{b}].supports[{k}]");
             let mut comps = Vec::new();
@@ -453,6 +471,54 @@ impl Problem {
         })
     }
 
+    /// A body of revolution lies at r = x ≥ 0, and on the axis its radial displacement is zero
+    /// (the axis condition, implied rather than given: u_r/r must stay finite there). Hold
+    /// the radial dofs of the boundary edges along the axis and of the vertices on it.
+    fn hold_axis(
+        &self,
+        b: usize,
+        mesh: &Mesh,
+        dofs: &crate::dofs::DofMap,
+        basis: &crate::basis::QuadBasis,
+        hold: &mut impl FnMut(usize, f64, &str) -> Result<(), ProblemError>,
+    ) -> Result<(), ProblemError> {
+        let size = mesh
+            .vertices
+            .iter()
+            .fold(0.0f64, |a, v| a.max(v[0].abs()).max(v[1].abs()));
+        let tolerance = 1e-9 * size.max(1.0);
+        let edges = crate::input::heat::boundary_edges(mesh);
+        for &(element, local, _) in &edges {
+            for t in [-1.0, -0.5, 0.0, 0.5, 1.0] {
+                let x = mesh.point_on_edge(element, local, t);
+                if x[0] < -tolerance {
+                    return Err(self.error(
+                        format!("bodies[{b}].blocks"),
+                        format!("body \"{}\" reaches r = x = {:.6} mm at z = {:.6} mm: a body of revolution (analysis.kind = \"axisymmetric\") lies at r ≥ 0, x being the radius", self.spec.bodies[b].name, x[0], x[1]),
+                    ));
+                }
+            }
+        }
+        const AXIS: &str =
+            "the axis (r = 0, where an axisymmetric body's radial displacement is zero)";
+        for &(element, local, _) in &edges {
+            let along = [-1.0, 0.0, 1.0]
+                .iter()
+                .all(|&t| mesh.point_on_edge(element, local, t)[0].abs() <= tolerance);
+            if along {
+                for (g, _) in crate::loads::trace_dofs(dofs, mesh, basis, element, local) {
+                    hold(g[0], 0.0, AXIS)?;
+                }
+            }
+        }
+        for (v, x) in mesh.vertices.iter().enumerate() {
+            if x[0].abs() <= tolerance {
+                hold(dofs.vertex_dof(v, 0), 0.0, AXIS)?;
+            }
+        }
+        Ok(())
+    }
+
     /// Degree and space of body `b`: its own `p` if given, else `analysis.p`.
     pub fn body_discretisation(&self, b: usize) -> Discretisation {
         Discretisation {
@@ -507,7 +573,7 @@ impl Problem {
                 edges,
                 &body.dofs,
                 &body.basis,
-                self.analysis.thickness(),
+                self.analysis,
                 &mut load,
             );
         }

@@ -9,10 +9,12 @@ use std::collections::BTreeMap;
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct AnalysisSpec {
-    /// "plane_stress" or "plane_strain".
+    /// "plane_stress", "plane_strain" or "axisymmetric".
     pub kind: String,
-    /// Out-of-plane thickness, mm.
-    pub thickness: f64,
+    /// Out-of-plane thickness, mm: required by the plane analyses, refused by the
+    /// axisymmetric one (whose integrals are over the whole circle).
+    #[serde(default)]
+    pub thickness: Option<f64>,
     /// Polynomial degree p (1..=20).
     pub p: usize,
     /// "tensor" (default) or "trunk".

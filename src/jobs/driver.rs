@@ -68,7 +68,12 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
                     ),
                 )
             })?;
-            probes.insert(name.clone(), json!({ "displacement": numbers(&v.displacement), "stress": numbers(&v.stress), "strain": numbers(&v.strain) }));
+            let mut values = json!({ "displacement": numbers(&v.displacement), "stress": numbers(&v.stress), "strain": numbers(&v.strain) });
+            if problem.analysis.is_axisymmetric() {
+                values["hoop_strain"] = number(v.hoop[0]);
+                values["hoop_stress"] = number(v.hoop[1]);
+            }
+            probes.insert(name.clone(), values);
             let materials = body.mesh.materials_at(probe.at);
             if materials.len() > 1 {
                 let names: Vec<&str> = problem.spec.materials.keys().map(String::as_str).collect();

@@ -51,18 +51,27 @@ pub struct VtkContact<'a> {
 /// Von Mises equivalent stress (MPa) of the in-plane stress [σ_xx, σ_zz, σ_xz]; under plane
 /// strain with σ_yy = ν (σ_xx + σ_zz), under plane stress with σ_yy = 0.
 pub fn von_mises(stress: [f64; 3], analysis: Analysis, poisson: f64) -> f64 {
-    von_mises_heated(stress, analysis, poisson, 0.0)
+    von_mises_heated(stress, analysis, poisson, 0.0, 0.0)
 }
 
 /// [`von_mises`] of a heated body: in plane strain, ε_yy = 0 holds back the out-of-plane
 /// thermal expansion, so σ_yy = ν (σ_xx + σ_zz) − E α ΔT; `held_back` is E α ΔT (MPa, 0 in
 /// plane stress, where σ_yy = 0 whatever the temperature). A free block heated uniformly in
 /// plane strain has σ_yy = −E α ΔT and a von Mises stress of E α ΔT, not zero.
-pub fn von_mises_heated(stress: [f64; 3], analysis: Analysis, poisson: f64, held_back: f64) -> f64 {
+///
+/// An axisymmetric body's third normal stress is its hoop stress `hoop` (MPa).
+pub fn von_mises_heated(
+    stress: [f64; 3],
+    analysis: Analysis,
+    poisson: f64,
+    held_back: f64,
+    hoop: f64,
+) -> f64 {
     let [sx, sz, sxz] = stress;
     let sy = match analysis {
         Analysis::PlaneStress { .. } => 0.0,
         Analysis::PlaneStrain { .. } => poisson * (sx + sz) - held_back,
+        Analysis::Axisymmetric => hoop,
     };
     (0.5 * ((sx - sy).powi(2) + (sy - sz).powi(2) + (sz - sx).powi(2)) + 3.0 * sxz * sxz).sqrt()
 }
@@ -108,6 +117,7 @@ impl Grid {
                         body.analysis,
                         poisson,
                         held_back,
+                        v.hoop[1],
                     ));
                     self.temperature.push(
                         b.field
@@ -327,7 +337,7 @@ mod tests {
         // stress nothing holds it back.
         let strain = Analysis::PlaneStrain { thickness: 1.0 };
         let stress = Analysis::PlaneStress { thickness: 1.0 };
-        assert!((von_mises_heated([0.0; 3], strain, 0.3, 120.0) - 120.0).abs() < 1e-12);
-        assert_eq!(von_mises_heated([0.0; 3], stress, 0.3, 120.0), 0.0);
+        assert!((von_mises_heated([0.0; 3], strain, 0.3, 120.0, 0.0) - 120.0).abs() < 1e-12);
+        assert_eq!(von_mises_heated([0.0; 3], stress, 0.3, 120.0, 0.0), 0.0);
     }
 }

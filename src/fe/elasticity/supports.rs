@@ -42,12 +42,13 @@ pub struct SpringBlock {
 }
 
 impl SpringBlock {
-    /// The block of `spring` on `mesh`, for a body of `thickness` mm.
+    /// The block of `spring` on `mesh`, for a body of the given analysis (its thickness, or
+    /// 2πr).
     pub fn new(
         mesh: &Mesh,
         dofs: &DofMap,
         basis: &QuadBasis,
-        thickness: f64,
+        analysis: crate::material::Analysis,
         spring: &Spring,
     ) -> Self {
         let p = dofs.p;
@@ -64,6 +65,7 @@ impl SpringBlock {
         // straight edge, and on a curved one the normal's variation needs a few more.
         for (t, ds) in edge_quadrature(mesh, spring.element, spring.local, None, p + 4) {
             let (_, normal) = mesh.edge_frame(spring.element, spring.local, t);
+            let thickness = analysis.weight(mesh.point_on_edge(spring.element, spring.local, t));
             let tangent = [-normal[1], normal[0]];
             crate::basis::shape_1d(p, t, &mut values, &mut derivatives);
             // k_n n nᵀ + k_t τ τᵀ, per unit area.

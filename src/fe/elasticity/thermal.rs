@@ -39,7 +39,11 @@ fn coupling_matrix(
     let tab = basis.tabulate(&rule.points, &rule.points);
     let n = basis.n_modes();
     let s = material.thermal_stress_per_kelvin(body.analysis, alpha);
-    let t = body.analysis.thickness();
+    // Heat needs contact, which axisymmetric bodies do not have yet (refused with it).
+    let t = body
+        .analysis
+        .thickness()
+        .expect("contact, and with it heat, is refused for axisymmetric bodies");
     let mut f = Mat::<f64>::zeros(2 * n, n);
     for iy in 0..nq {
         for ix in 0..nq {

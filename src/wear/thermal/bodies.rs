@@ -36,7 +36,11 @@ pub(super) fn conduction_spec(
         name: body.name.clone(),
         p: body.dofs.p,
         space: input.space,
-        thickness: body.analysis.thickness(),
+        // Heat needs contact, which axisymmetric bodies do not have yet (refused with it).
+        thickness: body
+            .analysis
+            .thickness()
+            .expect("contact, and with it heat, is refused for axisymmetric bodies"),
         materials: settings.materials.iter().map(|m| Some(*m)).collect(),
         edges,
         faces: settings.faces,
