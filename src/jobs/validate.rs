@@ -10,6 +10,7 @@
 use serde_json::{json, Value};
 use std::time::Instant;
 
+mod axisymmetric_cases;
 mod cases;
 mod heat_cases;
 mod part_cases;
@@ -269,6 +270,8 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     sliding_cases::ring(&mut checks)?;
     sliding_cases::ring_steady(&mut checks)?;
     sliding_cases::tribometer_volumes(&mut checks)?;
+    axisymmetric_cases::tube(&mut checks)?;
+    axisymmetric_cases::sphere(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks
             .iter_mut()
