@@ -43,6 +43,7 @@ pub struct ContactPoints {
     pub x: Vec<Point>,
     /// Integration weight of each point, mm: the Lobatto weight × edge Jacobian (collocation),
     /// or D_ii = ∫ N_i ds (mortar; the same on straight edges). Contact area = weight × t.
+    /// Bodies of revolution: the ring's area 2πr × that, mm², with t = 1.
     pub weight: Vec<f64>,
     /// Unit normal n_c (into body 2).
     pub normal: Vec<Point>,
@@ -58,6 +59,35 @@ pub struct ContactPoints {
 /// of [`crate::elasticity::Displacement`]): (x dof, z dof, coefficient).
 pub type Trace = Vec<([usize; 2], f64)>;
 
+/// A contact point on the axis of a body of revolution. Its ring has no area (∫ L_i 2πr ds is
+/// zero for the nodal interpolation on the axis), so the point force the solve puts there
+/// says nothing of the pressure, and a point force on the axis is a 3D point load, far more
+/// compliant than its neighbours' rings: it takes almost none. The pressure there is read
+/// from the three nearest points' instead, by the parabola through them (p is even in r on
+/// the axis, and Hertz's ball is then within 1e-4 of p₀).
+#[derive(Clone, Debug)]
+pub struct AxisPoint {
+    /// Index of the point on the axis.
+    pub point: usize,
+    /// The nearest points along the edge and their weights in the parabola's value there.
+    pub from: [(usize, f64); 3],
+}
+
+impl AxisPoint {
+    /// The pressure on the axis (MPa) from `pressure` at the other points: the parabola's
+    /// value, not below zero, and zero where the nearest point carries none.
+    pub fn pressure(&self, pressure: &[f64]) -> f64 {
+        if pressure[self.from[0].0] <= 0.0 {
+            return 0.0;
+        }
+        self.from
+            .iter()
+            .map(|&(i, c)| c * pressure[i])
+            .sum::<f64>()
+            .max(0.0)
+    }
+}
+
 /// The contact problem condensed onto the contact points.
 #[derive(Clone, Debug)]
 pub struct CondensedContact {
@@ -65,6 +95,8 @@ pub struct CondensedContact {
     pub points: ContactPoints,
     /// Thickness t, mm.
     pub thickness: f64,
+    /// Points on the axis of a body of revolution (empty in a plane analysis).
+    pub axis_points: Vec<AxisPoint>,
     /// Friction coefficient μ.
     pub friction: f64,
     /// n_iᵀ G n_j, mm/N (N × N, row-major).
@@ -477,12 +509,9 @@ impl CondensedContact {
         let edge2 = problem
             .named_edge(&body2.mesh, b2, &c.target_edge, "contact.target_edge")?
             .to_vec();
-        let t = problem.analysis.thickness().ok_or_else(|| {
-            problem.error(
-                "analysis.kind",
-                "contact between axisymmetric bodies is not built yet",
-            )
-        })?;
+        // A body of revolution integrates over the whole circle: its contact points' weights
+        // become areas (below) and the thickness 1.
+        let t = problem.analysis.thickness().unwrap_or(1.0);
         // A press fit's loop once gave its start twice, one copy with twice the pressure and
         // the other none, in silence (red team A).
         if closed_loop(body1, &edge1) {
@@ -530,6 +559,11 @@ impl CondensedContact {
         };
         let (traces2, surface_misfits) =
             body2_traces(problem, c, body1, &chain, body2, &edge2, &mut points)?;
+        let axis_points = if problem.analysis.is_axisymmetric() {
+            axisymmetric_areas(&mut points)
+        } else {
+            Vec::new()
+        };
         // Loads on the bodies themselves (all tractions but the plate's, which load the plate)
         // and prescribed support displacements move the contact points before any contact
         // force acts: their normal displacements enter the gap, d = u_n⁽²⁾ − u_n⁽¹⁾ + g.
@@ -590,6 +624,7 @@ impl CondensedContact {
         let contact = CondensedContact {
             points,
             thickness: t,
+            axis_points,
             friction: c.friction,
             a_nn,
             a_nt,
@@ -776,4 +811,49 @@ impl CondensedContact {
     pub fn is_empty(&self) -> bool {
         self.points.x.is_empty()
     }
+}
+
+/// A body of revolution's contact points carry rings: point i's weight (its share of the
+/// edge's length, the Lobatto weight times the edge's Jacobian) becomes the ring's area
+/// 2π r_i w_i, mm², which is ∫ L_i 2πr ds exactly for the nodal interpolation of a pressure of
+/// degree up to p − 2 (Lobatto quadrature is exact to degree 2p − 1). A point on the axis has
+/// no ring: it stands for the disc of radius w_i about the axis, π w_i², so that its force has
+/// a pressure (Hertz's ball: within 0.5 % of the centre's, tests/axisymmetric_contact.rs).
+fn axisymmetric_areas(points: &mut ContactPoints) -> Vec<AxisPoint> {
+    let size = points
+        .x
+        .iter()
+        .fold(0.0f64, |a, x| a.max(x[0].abs()).max(x[1].abs()));
+    let n = points.x.len();
+    let mut axis = Vec::new();
+    for (i, (w, x)) in points.weight.iter_mut().zip(&points.x).enumerate() {
+        if x[0] > 1e-12 * size.max(1.0) {
+            *w *= std::f64::consts::TAU * x[0];
+            continue;
+        }
+        *w = std::f64::consts::PI * *w * *w;
+        // The three nearest points along the edge, on the side that has them.
+        let from: Vec<usize> = if i + 3 < n {
+            vec![i + 1, i + 2, i + 3]
+        } else if i >= 3 {
+            vec![i - 1, i - 2, i - 3]
+        } else {
+            continue;
+        };
+        let r: Vec<f64> = from.iter().map(|&k| points.x[k][0]).collect();
+        // Lagrange weights of the parabola through (r_k, p_k), evaluated at r = 0.
+        let weight = |k: usize| {
+            let (a, b) = ((k + 1) % 3, (k + 2) % 3);
+            r[a] * r[b] / ((r[k] - r[a]) * (r[k] - r[b]))
+        };
+        axis.push(AxisPoint {
+            point: i,
+            from: [
+                (from[0], weight(0)),
+                (from[1], weight(1)),
+                (from[2], weight(2)),
+            ],
+        });
+    }
+    axis
 }

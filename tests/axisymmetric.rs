@@ -257,15 +257,4 @@ fn bad_axisymmetric_input_is_refused_by_name() {
     let e = moved.elastic_body(0, &[]).err().expect("refused");
     assert_eq!(e.key, "bodies[0].supports[1]", "{e}");
     assert!(e.message.contains("the axis"), "{e}");
-    // Contact between bodies of revolution is the next step: refused by name, not computed
-    // as a plane problem.
-    let with_contact = format!(
-        "{}[contact]\nbody = \"tube\"\nedge = \"end\"\ntarget_body = \"tube\"\ntarget_edge = \"mid\"\n",
-        tube(4, 2, 1)
-    );
-    let problem = Problem::from_toml(&with_contact, "contact.toml").unwrap();
-    let e = wearfem::contact::CondensedContact::build(&problem)
-        .map(|_| ())
-        .expect_err("refused");
-    assert_eq!(e.key, "analysis.kind");
 }

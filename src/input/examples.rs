@@ -48,6 +48,14 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         "block-on-ring",
         include_str!("../../examples/block-on-ring.toml"),
     ),
+    (
+        "ball-on-flat",
+        include_str!("../../examples/ball-on-flat.toml"),
+    ),
+    (
+        "axisymmetric-punch",
+        include_str!("../../examples/axisymmetric-punch.toml"),
+    ),
 ];
 
 /// The text of built-in example `name`.

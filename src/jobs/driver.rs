@@ -108,6 +108,19 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
     }))
 }
 
+/// Refuse a wear job (`what`) on bodies of revolution, naming the key: their sliding (a turn
+/// about the axis at ω r, or reciprocation along it) is not built yet, and a plane wear rule
+/// would be a wrong answer for them.
+pub fn require_plane_wear(problem: &Problem, what: &str) -> Result<(), ProblemError> {
+    if problem.analysis.is_axisymmetric() {
+        return Err(problem.error(
+            "analysis.kind",
+            format!("is \"axisymmetric\", and {what} of bodies of revolution is not built yet (their sliding turns about the axis or runs along it); `wearfem contact` and `wearfem elastic` solve them"),
+        ));
+    }
+    Ok(())
+}
+
 /// The solver method named in the problem's `[contact]` section
 /// ([`Problem::contact_method`]).
 pub fn method(problem: &Problem) -> Result<Method, ProblemError> {
@@ -386,6 +399,7 @@ pub fn steady_with_heat(
     JobError,
 > {
     super::sliding::require_fixed_pairs(problem, "the steady state")?;
+    require_plane_wear(problem, "the steady state")?;
     let spec = problem
         .spec
         .wear
@@ -449,6 +463,7 @@ pub fn steady_by(
     settings: crate::paper_steady::MethodSettings,
 ) -> Result<(crate::paper_steady::MethodOutcome, CondensedContact, f64), JobError> {
     super::sliding::require_fixed_pairs(problem, "the steady state")?;
+    require_plane_wear(problem, "the steady state")?;
     let spec = problem
         .spec
         .wear

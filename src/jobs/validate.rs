@@ -272,6 +272,8 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     sliding_cases::tribometer_volumes(&mut checks)?;
     axisymmetric_cases::tube(&mut checks)?;
     axisymmetric_cases::sphere(&mut checks)?;
+    axisymmetric_cases::ball(&mut checks)?;
+    axisymmetric_cases::punch(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks
             .iter_mut()

@@ -78,6 +78,9 @@ pub struct ContactSolver {
     rigid_scale: Vec<f64>,
     /// Most active-set iterations before Lemke's method takes over.
     pub max_iterations: usize,
+    /// Points on the axis of a body of revolution, whose pressure is read from their
+    /// neighbours' ([`crate::contact::AxisPoint`]).
+    axis_points: Vec<crate::contact::AxisPoint>,
 }
 
 impl ContactSolver {
@@ -137,6 +140,7 @@ impl ContactSolver {
             index: Vec::with_capacity(n),
             inactive: Vec::with_capacity(n),
             correct: true,
+            axis_points: contact.axis_points.clone(),
             route: Route::Reduced,
             blocks: std::iter::once(0).chain(n..n + m).collect(),
             bound: vec![0.0; n],
@@ -262,6 +266,22 @@ impl ContactSolver {
     }
 
     fn solve_checked(
+        &mut self,
+        gap: &[f64],
+        direction: Direction,
+        out: &mut ContactSolution,
+        bounded: bool,
+    ) -> SolveInfo {
+        let info = self.solve_core(gap, direction, out, bounded);
+        if info.status == Status::Solved {
+            for axis in &self.axis_points {
+                out.pressure[axis.point] = axis.pressure(&out.pressure);
+            }
+        }
+        info
+    }
+
+    fn solve_core(
         &mut self,
         gap: &[f64],
         direction: Direction,

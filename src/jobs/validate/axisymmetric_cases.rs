@@ -79,7 +79,8 @@ pub fn sphere(checks: &mut Checks) -> Outcome {
     let (a, b, pressure) = (10.0f64, 20.0f64, 100.0);
     let radial = |radius: f64| {
         pressure * a.powi(3) / (YOUNG * (b.powi(3) - a.powi(3)))
-            * ((1.0 - 2.0 * POISSON) * radius + (1.0 + POISSON) * b.powi(3) / (2.0 * radius * radius))
+            * ((1.0 - 2.0 * POISSON) * radius
+                + (1.0 + POISSON) * b.powi(3) / (2.0 * radius * radius))
     };
     for (name, component, radius, what) in [
         ("pole", 1, a, "u_z at the inner pole (on the axis)"),
@@ -99,5 +100,101 @@ pub fn sphere(checks: &mut Checks) -> Outcome {
             Bound::Relative(1e-8),
         );
     }
+    Ok(())
+}
+
+/// The first contact of a built-in example: contact points' r (mm), pressures (MPa) and the
+/// plate's motion λ_F (mm).
+fn first_contact(name: &str) -> Result<(Vec<f64>, Vec<f64>, f64), super::ValidateError> {
+    use crate::complementarity::{ContactSolver, Direction, Method, Status};
+    let p = super::cases::problem(name, &[])?;
+    let (contact, _, _) = crate::contact::CondensedContact::build(&p).map_err(|e| fail(name, e))?;
+    let (solution, info) = ContactSolver::new(&contact, Method::ActiveSet)
+        .solve(&contact.points.initial_gap, Direction::Plus);
+    if info.status != Status::Solved {
+        return Err(fail(name, "the contact solve failed"));
+    }
+    let r = contact.points.x.iter().map(|x| x[0]).collect();
+    Ok((r, solution.pressure, solution.rigid[0]))
+}
+
+/// The built-in `ball-on-flat`: a steel ball (R = 5 mm) on a steel flat with 10 N, Hertz's
+/// p₀ = 3P/(2πa²) at the axis and a³ = 3PR/(4E*), the zone's radius measured where the
+/// least-squares line of p² against r² (inside 0.9 of the zone) reaches zero.
+pub fn ball(checks: &mut Checks) -> Outcome {
+    let (r, pressure, _) = first_contact("ball-on-flat")?;
+    let (force, radius) = (10.0, 5.0);
+    let modulus = YOUNG / (2.0 * (1.0 - POISSON * POISSON));
+    let a = (3.0 * force * radius / (4.0 * modulus)).cbrt();
+    let p0 = 3.0 * force / (2.0 * std::f64::consts::PI * a * a);
+    push(
+        checks,
+        "axisymmetric.hertz_p0",
+        "ball-on-flat (p = 8): the pressure on the axis",
+        "MPa",
+        p0,
+        "Hertz: 3P/(2πa²)",
+        pressure[0],
+        Bound::Relative(0.01),
+    );
+    let last = pressure.iter().rposition(|&p| p > 0.0).unwrap_or(0);
+    let inside: Vec<(f64, f64)> = (r.iter().zip(&pressure))
+        .filter(|(ri, _)| **ri < 0.9 * r[last])
+        .map(|(ri, pi)| (ri * ri, pi * pi))
+        .collect();
+    let count = inside.len() as f64;
+    let (sx, sy) = inside
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x, b + y));
+    let (sxx, sxy) = inside
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x * x, b + x * y));
+    let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+    let measured = (-(sy - slope * sx) / count / slope).sqrt();
+    push(
+        checks,
+        "axisymmetric.hertz_a",
+        "ball-on-flat: the contact radius (where p² against r² reaches zero)",
+        "mm",
+        a,
+        "Hertz: a³ = 3PR/(4E*)",
+        measured,
+        Bound::Relative(0.01),
+    );
+    Ok(())
+}
+
+/// The built-in `axisymmetric-punch`: a rigid flat-ended cylinder (a = 1 mm, 1000 N) on a
+/// block 200a across and deep: Sneddon's pressure at r = a/2 and indentation.
+pub fn punch(checks: &mut Checks) -> Outcome {
+    let (r, pressure, approach) = first_contact("axisymmetric-punch")?;
+    let (force, a, young, poisson) = (1000.0, 1.0, 1.0e5, 0.3);
+    // The contact point nearest r = a/2.
+    let near = (0..r.len())
+        .min_by(|&i, &j| (r[i] - 0.5 * a).abs().total_cmp(&(r[j] - 0.5 * a).abs()))
+        .unwrap_or(0);
+    push(
+        checks,
+        "axisymmetric.sneddon_pressure",
+        format!(
+            "axisymmetric-punch (p = 8): the pressure at r = {:.4} mm",
+            r[near]
+        ),
+        "MPa",
+        force / (2.0 * std::f64::consts::PI * a * (a * a - r[near] * r[near]).sqrt()),
+        "Sneddon: P/(2πa√(a² − r²))",
+        pressure[near],
+        Bound::Relative(0.01),
+    );
+    push(
+        checks,
+        "axisymmetric.sneddon_indentation",
+        "axisymmetric-punch: the indentation (the plate's λ_F)",
+        "mm",
+        force * (1.0 - poisson * poisson) / (2.0 * a * young),
+        "Sneddon: P(1 − ν²)/(2aE), half-space",
+        approach,
+        Bound::Relative(0.01),
+    );
     Ok(())
 }
