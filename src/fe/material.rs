@@ -42,7 +42,7 @@ impl Analysis {
     }
 
     /// What an area (or line) integral is multiplied by at the point `x` (mm): the
-    /// thickness t of a plane analysis, the circumference 2πr (r = x[0]) of an axisymmetric
+    /// thickness t of a plane analysis, the circumference 2πr (r = `x[0]`) of an axisymmetric
     /// one.
     pub fn weight(&self, x: [f64; 2]) -> f64 {
         match *self {
