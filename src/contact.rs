@@ -560,7 +560,12 @@ impl CondensedContact {
         let (traces2, surface_misfits) =
             body2_traces(problem, c, body1, &chain, body2, &edge2, &mut points)?;
         let axis_points = if problem.analysis.is_axisymmetric() {
-            axisymmetric_areas(&mut points)
+            let size = body1
+                .mesh
+                .vertices
+                .iter()
+                .fold(0.0f64, |a, v| a.max(v[0].abs()).max(v[1].abs()));
+            axisymmetric_areas(&mut points, size)
         } else {
             Vec::new()
         };
@@ -819,15 +824,11 @@ impl CondensedContact {
 /// degree up to p − 2 (Lobatto quadrature is exact to degree 2p − 1). A point on the axis has
 /// no ring: it stands for the disc of radius w_i about the axis, π w_i², so that its force has
 /// a pressure (Hertz's ball: within 0.5 % of the centre's, tests/axisymmetric_contact.rs).
-fn axisymmetric_areas(points: &mut ContactPoints) -> Vec<AxisPoint> {
-    let size = points
-        .x
-        .iter()
-        .fold(0.0f64, |a, x| a.max(x[0].abs()).max(x[1].abs()));
+fn axisymmetric_areas(points: &mut ContactPoints, size: f64) -> Vec<AxisPoint> {
     let n = points.x.len();
     let mut axis = Vec::new();
     for (i, (w, x)) in points.weight.iter_mut().zip(&points.x).enumerate() {
-        if x[0] > 1e-12 * size.max(1.0) {
+        if !crate::material::on_axis(x[0], size) {
             *w *= std::f64::consts::TAU * x[0];
             continue;
         }

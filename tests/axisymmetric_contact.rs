@@ -255,3 +255,46 @@ fn what_is_not_built_for_bodies_of_revolution_is_refused_by_name() {
     let steady = wearfem::driver::steady(&problem).map(|_| ());
     assert!(steady.unwrap_err().to_string().contains("analysis.kind"));
 }
+
+#[test]
+fn review_findings_stay_fixed() {
+    // A ball whose axis is 1e-7 mm off r = 0 (as meshes from CAD give): one tolerance says
+    // it is on the axis everywhere, and it presses as Hertz says (it pressed 10 % too hard).
+    let steel = (2.0e5, 0.3);
+    let exact = ball(50.0, 1000.0, [steel, steel], 6);
+    let off = exact.replace(
+        "[[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]]",
+        "[[1e-7, 0.0], [10.0, 0.0], [10.0, 10.0], [1e-7, 10.0]]",
+    );
+    assert_ne!(off, exact);
+    let (_, on_axis, _) = solve(&exact);
+    let (_, near_axis, _) = solve(&off);
+    // The same problem to the offset's order (1e-8 of the radius).
+    assert!(
+        (on_axis[0] - near_axis[0]).abs() < 1e-4 * on_axis[0],
+        "{} {}",
+        on_axis[0],
+        near_axis[0]
+    );
+    // Friction between bodies of revolution is refused until their sliding is built.
+    let rough = exact.replace("friction = 0.0", "friction = 0.5");
+    let problem = Problem::from_toml(&rough, "rough.toml").unwrap();
+    let e = CondensedContact::build(&problem)
+        .map(|_| ())
+        .expect_err("refused");
+    assert_eq!(e.key, "contact.friction");
+    // A traction on an edge along the axis acts on nothing: refused.
+    let on_axis_load = exact.replace(
+        "names = { bottom = \"contact\", top = \"top\" }",
+        "names = { bottom = \"contact\", top = \"top\", left = \"axis\" }\n[[bodies.tractions]]\nedge = \"axis\"\nnormal = 100.0",
+    );
+    let e = Problem::from_toml(&on_axis_load, "axis-load.toml")
+        .map(|_| ())
+        .expect_err("refused");
+    assert_eq!(e.key, "bodies[0].tractions[0].edge", "{e}");
+    // A plate of a body of revolution reports no radial force and no moment.
+    let problem = Problem::from_toml(&exact, "ball.toml").unwrap();
+    let (contact, _, _) = CondensedContact::build(&problem).unwrap();
+    assert_eq!(contact.plate_resultant.0[0], 0.0);
+    assert_eq!(contact.plate_resultant.1, 0.0);
+}

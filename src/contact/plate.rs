@@ -45,6 +45,18 @@ pub(super) fn plate_modes(
         .sum();
     let toward = if facing_up > 0.0 { 1.0 } else { -1.0 };
     let length: f64 = points.weight.iter().sum();
+    if pl.motion != "fixed"
+        && facing_up.abs() <= 1e-9 * length
+        && problem.analysis.is_axisymmetric()
+    {
+        return Err(problem.error(
+            "plate.motion",
+            format!(
+                "the contact edge \"{}\" faces the axis or away from it (a pin in a bore, a ring on a shaft), and the plate of a body of revolution moves only along the axis: it cannot press the bodies together. Hold the plate (motion = \"fixed\") and press them by an overlap of their geometry or by loads on their other edges",
+                problem.spec.contact.as_ref().map_or("", |c| c.edge.as_str())
+            ),
+        ));
+    }
     if pl.motion != "fixed" && facing_up.abs() <= 1e-9 * length {
         // Body 2 lies beside body 1 (the contact's normals horizontal on the whole): a plate
         // that moves only vertically can neither press body 1 onto it nor balance the load.
@@ -120,6 +132,13 @@ pub(super) fn plate_modes(
                 pin[0], pin[1]
             ),
         ));
+    }
+    if problem.analysis.is_axisymmetric() {
+        // Loads all round a circle have no net radial force and no moment in the (r, z)
+        // plane: what the sums give there is an artefact of the half-plane (a review found
+        // −942 478 N reported for a tube under external pressure).
+        force[0] = 0.0;
+        moment = 0.0;
     }
     Ok((phis, names, load, (force, moment)))
 }

@@ -59,7 +59,7 @@ impl ElasticBody {
                 .iter()
                 .fold(0.0f64, |a, v| a.max(v[0].abs()));
             // On the axis u_r = 0 (held there), and u_r/r tends to ∂u_r/∂r.
-            let hoop_strain = if r > 1e-12 * size {
+            let hoop_strain = if !crate::material::on_axis(r, size) {
                 disp[0] / r
             } else {
                 grad[0][0]

@@ -281,6 +281,22 @@ impl Problem {
                     ),
                 ));
             }
+            if self.analysis.is_axisymmetric() {
+                let size = mesh
+                    .vertices
+                    .iter()
+                    .fold(0.0f64, |a, v| a.max(v[0].abs()).max(v[1].abs()));
+                let mut off_axis = false;
+                traction.for_each_point(mesh, edges, 1, unit, |_, _, _, x, _, _| {
+                    off_axis |= !crate::material::on_axis(x[0], size);
+                });
+                if !off_axis {
+                    return Err(self.error(
+                        format!("{key}.edge"),
+                        format!("\"{}\" lies on the axis (r = 0), where a body of revolution has no surface: a traction there acts on nothing (its 2πr weight is zero)", traction.edge),
+                    ));
+                }
+            }
         }
         Ok(())
     }
@@ -486,12 +502,12 @@ impl Problem {
             .vertices
             .iter()
             .fold(0.0f64, |a, v| a.max(v[0].abs()).max(v[1].abs()));
-        let tolerance = 1e-9 * size.max(1.0);
+        let on_axis = |r: f64| crate::material::on_axis(r, size);
         let edges = crate::input::heat::boundary_edges(mesh);
         for &(element, local, _) in &edges {
             for t in [-1.0, -0.5, 0.0, 0.5, 1.0] {
                 let x = mesh.point_on_edge(element, local, t);
-                if x[0] < -tolerance {
+                if x[0] < 0.0 && !on_axis(x[0]) {
                     return Err(self.error(
                         format!("bodies[{b}].blocks"),
                         format!("body \"{}\" reaches r = x = {:.6} mm at z = {:.6} mm: a body of revolution (analysis.kind = \"axisymmetric\") lies at r ≥ 0, x being the radius", self.spec.bodies[b].name, x[0], x[1]),
@@ -504,7 +520,7 @@ impl Problem {
         for &(element, local, _) in &edges {
             let along = [-1.0, 0.0, 1.0]
                 .iter()
-                .all(|&t| mesh.point_on_edge(element, local, t)[0].abs() <= tolerance);
+                .all(|&t| on_axis(mesh.point_on_edge(element, local, t)[0]));
             if along {
                 for (g, _) in crate::loads::trace_dofs(dofs, mesh, basis, element, local) {
                     hold(g[0], 0.0, AXIS)?;
@@ -512,7 +528,7 @@ impl Problem {
             }
         }
         for (v, x) in mesh.vertices.iter().enumerate() {
-            if x[0].abs() <= tolerance {
+            if on_axis(x[0]) {
                 hold(dofs.vertex_dof(v, 0), 0.0, AXIS)?;
             }
         }

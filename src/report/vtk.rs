@@ -87,6 +87,10 @@ struct Grid {
     displacement: Vec<[f64; 2]>,
     stress: Vec<[f64; 3]>,
     von_mises: Vec<f64>,
+    /// Hoop stress σ_θθ, MPa (bodies of revolution; zero in a plane analysis, not written).
+    hoop: Vec<f64>,
+    /// Whether any body is a body of revolution.
+    axisymmetric: bool,
     /// °C where the body has a temperature (NaN elsewhere, never written then).
     temperature: Vec<f64>,
     cells: Vec<[usize; 4]>,
@@ -97,6 +101,7 @@ struct Grid {
 impl Grid {
     fn add(&mut self, b: &VtkBody) {
         let body = b.body;
+        self.axisymmetric |= body.analysis.is_axisymmetric();
         let m = subdivisions(body.dofs.p);
         let mut nodes = crate::quadrature::gauss_lobatto(m + 1).points;
         nodes.sort_by(f64::total_cmp);
@@ -111,6 +116,7 @@ impl Grid {
                     self.points.push(body.mesh.map(element, xi, eta));
                     self.displacement.push(v.displacement);
                     self.stress.push(v.stress);
+                    self.hoop.push(v.hoop[1]);
                     let held_back = b.field.held_back_stress(body, element, xi, eta);
                     self.von_mises.push(von_mises_heated(
                         v.stress,
@@ -232,7 +238,8 @@ const VTK_QUAD: u8 = 9;
 
 /// Write the bodies as one `.vtu` file: point data `displacement` (mm, 3 components),
 /// `stress_xx`, `stress_zz`, `stress_xz`, `von_mises` (MPa; with heat the stress is
-/// D (ε − ε_th), thermal stresses included), with heat `temperature` (°C); cell data
+/// D (ε − ε_th), thermal stresses included), `stress_hoop` (MPa, bodies of revolution), with
+/// heat `temperature` (°C); cell data
 /// `material` (index in the problem's materials, alphabetical) and `body`.
 pub fn write_bodies(path: &Path, bodies: &[VtkBody]) -> std::io::Result<()> {
     let mut grid = Grid::default();
@@ -254,6 +261,9 @@ pub fn write_bodies(path: &Path, bodies: &[VtkBody]) -> std::io::Result<()> {
         cell_ints: vec![("material", &grid.material), ("body", &grid.body)],
     };
     let mut piece = piece;
+    if grid.axisymmetric {
+        piece.point_scalars.push(("stress_hoop", grid.hoop.clone()));
+    }
     if grid.temperature.iter().all(|t| t.is_finite()) && !grid.temperature.is_empty() {
         piece
             .point_scalars
