@@ -260,3 +260,17 @@ fn bad_axisymmetric_input_is_refused_by_name() {
     assert_eq!(e.key, "bodies[0].supports[1]", "{e}");
     assert!(e.message.contains("the axis"), "{e}");
 }
+
+#[test]
+fn summaries_say_that_forces_are_for_the_whole_circle() {
+    let tube = problem(&tube(4, 2, 1));
+    let summary = wearfem::driver::elastic(&tube).unwrap();
+    let said = summary["axisymmetric"]["forces"].as_str().unwrap();
+    assert!(said.contains("whole circumference"), "{said}");
+    // A plane problem's summary is as before: no such key.
+    let lame = Problem::from_toml(wearfem::examples::example("lame").unwrap(), "lame").unwrap();
+    assert!(wearfem::driver::elastic(&lame)
+        .unwrap()
+        .get("axisymmetric")
+        .is_none());
+}

@@ -96,7 +96,7 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
             "the elastic solve's strain energy is not finite ({energy}): the displacements overflowed; check the loads against the moduli and the supports (nothing was written)"
         )));
     }
-    Ok(json!({
+    let mut summary = json!({
         "title": problem.spec.title,
         "wearfem_version": crate::VERSION,
         "dofs": dofs,
@@ -105,7 +105,20 @@ pub fn elastic(problem: &Problem) -> Result<Value, JobError> {
         "probes": probes,
         "warnings": warnings,
         "seconds": start.elapsed().as_secs_f64(),
-    }))
+    });
+    if problem.analysis.is_axisymmetric() {
+        summary["axisymmetric"] = axisymmetric_json();
+    }
+    Ok(summary)
+}
+
+/// What summary.json says of a body of revolution's numbers, so that none is read per radian.
+fn axisymmetric_json() -> Value {
+    json!({
+        "x": "the radius r, mm",
+        "forces": "N for the whole circumference (2πr), as are the loads, the plate force and the strain energy",
+        "stress_components": "σ_rr, σ_zz, σ_rz; the probes' hoop_stress is σ_θθ",
+    })
 }
 
 /// Refuse a wear job (`what`) on bodies of revolution, naming the key: their sliding (a turn
@@ -285,9 +298,12 @@ pub fn contact(
         "target_mesh": target_mesh_json(&contact),
         "setup_seconds": setup,
     });
+    let mut summary = summary;
+    if problem.analysis.is_axisymmetric() {
+        summary["axisymmetric"] = axisymmetric_json();
+    }
     // A failed solve is returned too (status in `info`), with its residuals but none of its
     // values in the summary: nothing taken from a failed solve is a result.
-    let mut summary = summary;
     // The console's warning lines, also for Python: the zone diagnostics describe a
     // solution, so a failed solve gets none.
     let mut warnings: Vec<String> = penalty_warning(problem, &contact).into_iter().collect();

@@ -483,10 +483,16 @@ pub fn write_contact(
         .map(|(x, &p)| (x[0], p))
         .collect();
     let path = dir.join("pressure.svg");
+    // A body of revolution's x is its radius (its summary says so).
+    let along = if summary.get("axisymmetric").is_some() {
+        "r (mm)"
+    } else {
+        "x (mm)"
+    };
     line_plot(
         &path,
         &format!("{name}: contact pressure"),
-        "x (mm)",
+        along,
         "pressure (MPa)",
         &[Series {
             label: "pressure",
