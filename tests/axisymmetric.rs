@@ -274,3 +274,17 @@ fn summaries_say_that_forces_are_for_the_whole_circle() {
         .get("axisymmetric")
         .is_none());
 }
+
+#[test]
+fn supports_that_make_no_sense_on_the_axis_are_refused() {
+    // Holding z along the axis is a line support in 3D (no answer in the continuum); a spring
+    // bed on the axis holds nothing. Holding x there is what the axis condition does anyway.
+    let held_z = solid_cylinder("[[bodies.supports]]\nedge = \"axis\"\nfix = [\"z\"]");
+    let e = held_z.elastic_body(0, &[]).err().expect("refused");
+    assert_eq!(e.key, "bodies[0].supports[1].fix", "{e}");
+    let held_x = solid_cylinder("[[bodies.supports]]\nedge = \"axis\"\nfix = [\"x\"]");
+    assert!(held_x.elastic_body(0, &[]).is_ok());
+    let bed = solid_cylinder("[[bodies.springs]]\nedge = \"axis\"\nnormal = 100.0");
+    let e = bed.elastic_body(0, &[]).err().expect("refused");
+    assert_eq!(e.key, "bodies[0].springs[0].edge", "{e}");
+}

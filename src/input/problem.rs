@@ -417,9 +417,14 @@ impl Problem {
             }
             match (&s.edge, s.point) {
                 (Some(edge), None) => {
-                    for &(element, local) in
-                        self.named_edge(mesh, b, edge, &format!("{key}.edge"))?
-                    {
+                    let edges = self.named_edge(mesh, b, edge, &format!("{key}.edge"))?;
+                    if comps.contains(&1) && self.lies_on_axis(mesh, edges) {
+                        return Err(self.error(
+                            format!("{key}.fix"),
+                            format!("holds z along \"{edge}\", which lies on the axis: a line of a body of revolution has no area, and holding it is a line load in 3D that the continuum has no answer for (the result would depend on the mesh); hold a face (an end, a shoulder) instead. Its radial displacement is held there anyway"),
+                        ));
+                    }
+                    for &(element, local) in edges {
                         // A constant along the edge: its vertex modes take the value, its edge
                         // modes zero.
                         let trace = crate::loads::trace_dofs(dofs, mesh, basis, element, local);
@@ -467,7 +472,14 @@ impl Problem {
             if s.normal == 0.0 && s.tangential == 0.0 {
                 return Err(self.error(key, "has no stiffness: give normal or tangential (N/mm³)"));
             }
-            for &(element, local) in self.named_edge(mesh, b, &s.edge, &format!("{key}.edge"))? {
+            let edges = self.named_edge(mesh, b, &s.edge, &format!("{key}.edge"))?;
+            if self.lies_on_axis(mesh, edges) {
+                return Err(self.error(
+                    format!("{key}.edge"),
+                    format!("\"{}\" lies on the axis (r = 0), where a body of revolution has no surface: a spring bed there holds nothing (its 2πr weight is zero)", s.edge),
+                ));
+            }
+            for &(element, local) in edges {
                 springs.push(crate::elasticity::Spring {
                     element,
                     local,
@@ -484,6 +496,22 @@ impl Problem {
                 .map(|(&d, (v, _))| (d, *v))
                 .collect(),
             springs,
+        })
+    }
+
+    /// Whether the element edges `edges` of a body of revolution all lie on its axis.
+    fn lies_on_axis(&self, mesh: &Mesh, edges: &[(usize, usize)]) -> bool {
+        if !self.analysis.is_axisymmetric() || edges.is_empty() {
+            return false;
+        }
+        let size = mesh
+            .vertices
+            .iter()
+            .fold(0.0f64, |a, v| a.max(v[0].abs()).max(v[1].abs()));
+        edges.iter().all(|&(element, local)| {
+            [-1.0, 0.0, 1.0]
+                .iter()
+                .all(|&t| crate::material::on_axis(mesh.point_on_edge(element, local, t)[0], size))
         })
     }
 
