@@ -322,3 +322,26 @@ fn a_reciprocating_stroke_has_no_steady_state_and_the_run_says_what_it_tends_to(
     );
     assert!(steady["track_steepest_slope"].as_f64().unwrap() > 0.0);
 }
+
+#[test]
+fn a_ring_swung_to_and_fro_is_refused_with_the_right_reason() {
+    // Under a short swing the ring's track has ends, which steepen: no steady state. Swung
+    // over more than a turn it has none, but its wear is not even: not built, said so.
+    let monotonic = Ring::default().text();
+    for (amplitude, said) in [(10.0, "no periodic steady state"), (70.0, "no track ends")] {
+        let swung = monotonic.replace(
+            "sliding = \"monotonic\"\nspeed = 100.0\nstep_time = 1.2566370614359172",
+            &format!("sliding = \"reciprocating\"\namplitude = {amplitude}\nomega = 1.0"),
+        );
+        assert_ne!(swung, monotonic);
+        let problem = Problem::from_toml(&swung, "swung.toml").unwrap();
+        let refused = sliding_steady::steady(&problem)
+            .err()
+            .expect("refused")
+            .to_string();
+        assert!(
+            refused.contains("contact.pairs") && refused.contains(said),
+            "{refused}"
+        );
+    }
+}

@@ -43,6 +43,20 @@ pub fn steady(problem: &Problem) -> Result<SlidingSteadyState, JobError> {
     let mut setup = setup(problem, None)?;
     let settings = setup.settings.clone();
     let case = FiniteStrokeSteady::of(settings.monotonic, settings.laws[1].is_some());
+    let ends = &setup.contact.stroke.ends;
+    let swing = (ends[ends.len() - 1] - ends[0]).abs();
+    if let (false, Some(period)) = (settings.monotonic, setup.contact.shape.period()) {
+        if swing >= period {
+            // No track ends then, and the argument of the module docs does not apply; the
+            // wear is not even either (the speed varies along the swing).
+            return Err(problem
+                .error(
+                    "contact.pairs",
+                    format!("a ring swung to and fro over {:.3} turns has no track ends, but its wear is not even (the speed varies along the swing): its steady state is not built yet; `wearfem run` integrates it", swing / period),
+                )
+                .into());
+        }
+    }
     if let Some(why) = case.refusal() {
         return Err(problem.error("contact.pairs", why).into());
     }
