@@ -343,5 +343,33 @@ fn a_ring_swung_to_and_fro_is_refused_with_the_right_reason() {
             refused.contains("contact.pairs") && refused.contains(said),
             "{refused}"
         );
+        // The run's summary says the same (a review found the track-ends reason, and a flat
+        // trough's figure half the true rate, on the long swing).
+        let run = sliding::wear(&problem, Some(2)).unwrap();
+        let summary = run.summary(&problem);
+        let exists = &summary["steady_state"]["exists"];
+        if amplitude > 60.0 {
+            assert!(exists.is_null(), "{summary}");
+        } else {
+            assert_eq!(exists, false);
+        }
     }
+    // Where a steady state exists but is not built (body 2 does not wear), or every state is
+    // steady (body 1 does not wear on a turning ring), the run's summary does not say
+    // "exists: false" or send to `steady`.
+    let text = wearfem::examples::example("tribometer").unwrap();
+    let still = Problem::from_toml(&text.replace("body2 = { k = 1.0e-6 }", ""), "t").unwrap();
+    let summary = sliding::wear(&still, Some(2)).unwrap().summary(&still);
+    assert_eq!(summary["steady_state"]["exists"], true);
+    assert!(summary["steady_state"]["computed_by"].is_null());
+    let ring = Ring {
+        laws: "body2 = { beta = 1.0e-9 }",
+        ..Default::default()
+    }
+    .problem();
+    let summary = sliding::wear(&ring, Some(2)).unwrap().summary(&ring);
+    assert!(summary["steady_state"]["why"]
+        .as_str()
+        .unwrap()
+        .contains("does not wear"));
 }

@@ -451,9 +451,29 @@ impl SlidingRun {
     fn steady_state_json(&self) -> Value {
         use crate::steady_state::sliding::FiniteStrokeSteady;
         let case = FiniteStrokeSteady::of(self.settings.monotonic, self.settings.laws[1].is_some());
+        if self.settings.monotonic && self.settings.laws[0].is_none() {
+            // The ring wears evenly and changes nothing (a review found "computed by wearfem
+            // steady" here, which refuses the case: there is nothing to compute).
+            return json!({"exists": true, "why": "body 1 does not wear: every state is steady, the first pressure stays"});
+        }
         let Some(why) = case.refusal() else {
             return json!({"exists": true, "computed_by": "wearfem steady"});
         };
+        if case == FiniteStrokeSteady::NotBuilt {
+            return json!({"exists": true, "computed_by": null, "why": why});
+        }
+        let ends = &self.contact.stroke.ends;
+        let swing = (ends[ends.len() - 1] - ends[0]).abs();
+        if self
+            .contact
+            .shape
+            .period()
+            .is_some_and(|period| swing >= period)
+        {
+            // No track ends, and every point passes the contact more than once a half
+            // period: neither the argument nor the flat trough's figure applies.
+            return json!({"exists": null, "why": "a ring swung over a turn or more has no track ends, but its wear is not even (the speed varies along the swing): its steady state is not built"});
+        }
         let steps = &self.history.steps;
         let deepening = match steps.len() {
             n if n >= 2 => {

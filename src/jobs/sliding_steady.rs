@@ -145,7 +145,7 @@ impl SlidingSteadyState {
                 "uneven-ring",
                 &problem.file,
                 match spread {
-                    Some(s) => format!("the ring's positions, each solved on the steady worn shape, give pressures up to {:.2} % of the peak apart: the ring is not alike all round (its mesh, supports or loads), so it does not wear evenly and this steady state, which rests on even wear, is that far from the run's; mesh the rim evenly with contact.positions dividing its elements", 100.0 * s),
+                    Some(s) => format!("the ring's positions, each solved on the steady worn shape, give pressures up to {:.2} % of the peak apart: the ring is not alike all round (its mesh, supports or loads), so it does not wear evenly, and this steady state, which rests on even wear, is off by about as much at some positions (a run with many turns a step smooths the positions' differences too: end it with k = 1 to compare); mesh the rim evenly with contact.positions dividing its elements", 100.0 * s),
                     None => "a position of the ring could not be solved on the steady worn shape, so whether the ring wears evenly, on which this steady state rests, is not known".to_string(),
                 },
             )],
