@@ -97,8 +97,13 @@ pub struct CondensedContact {
     pub thickness: f64,
     /// Points on the axis of a body of revolution (empty in a plane analysis).
     pub axis_points: Vec<AxisPoint>,
-    /// Friction coefficient μ.
+    /// Friction coefficient μ of the friction in the plane of the section (0 for bodies of
+    /// revolution turning about their axis, whose friction is circumferential).
     pub friction: f64,
+    /// Bodies of revolution turning about their axis (`contact.sliding_motion =
+    /// "about_axis"`): the friction coefficient μ of their circumferential friction, which
+    /// leaves the (r, z) problem untouched and sets the torque ∫ μ p r dA; None otherwise.
+    pub friction_about_axis: Option<f64>,
     /// n_iᵀ G n_j, mm/N (N × N, row-major).
     pub a_nn: Vec<f64>,
     /// n_iᵀ G τ_j, mm/N (N × N, row-major).
@@ -626,11 +631,13 @@ impl CondensedContact {
             None => (vec![], vec![], vec![], ([0.0; 2], 0.0)),
             Some(pl) => plate_modes(problem, b1, body1, pl, &points)?,
         };
+        let about_axis = c.sliding_motion == "about_axis";
         let contact = CondensedContact {
             points,
             thickness: t,
             axis_points,
-            friction: c.friction,
+            friction: if about_axis { 0.0 } else { c.friction },
+            friction_about_axis: about_axis.then_some(c.friction),
             a_nn,
             a_nt,
             rigid_modes,

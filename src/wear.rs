@@ -17,16 +17,20 @@ mod body_wear;
 pub mod kinematics;
 pub mod law;
 mod outcome;
+pub mod rotation;
 mod schemes;
 pub mod sliding;
 mod step;
+pub mod terms;
 pub mod thermal;
 mod workspace;
 mod zero_shift;
 pub use adaptive::{AdaptiveMethod, AdaptiveSpec};
 pub use body_wear::worn_volume;
 pub use outcome::{non_rigid_part, steady_distance, SteadyDistance, StopReason};
+pub use rotation::AxisRotation;
 use serde::{Deserialize, Serialize};
+pub use terms::WearTerms;
 pub use zero_shift::wear_of_shape;
 
 /// Wear law parameters of one body: ẇ = β̃ pᵇ vᵃ (mm/s with p in MPa and v in mm/s). A file
@@ -62,6 +66,14 @@ pub struct WearSpec {
     /// Monotonic sliding speed v, mm/s.
     #[serde(default)]
     pub speed: f64,
+    /// Bodies of revolution turning about their axis (`contact.sliding_motion =
+    /// "about_axis"`), monotonic: the angular speed ω, rad/s (a point at radius r slides at
+    /// ω r). Replaces `speed`.
+    pub angular_speed: Option<f64>,
+    /// Bodies of revolution turning to and fro about their axis, reciprocating: the angle's
+    /// amplitude θ₀, rad (θ = −θ₀ cos ωτ; a point at radius r slides θ₀ r each way).
+    /// Replaces `amplitude`.
+    pub angle: Option<f64>,
     /// Monotonic: time per step, s.
     #[serde(default)]
     pub step_time: f64,
@@ -138,6 +150,60 @@ pub fn check_schedule(schedule: &[ScheduleEntry]) -> Result<(), String> {
     Ok(())
 }
 
+impl WearSpec {
+    /// Whether the bodies turn about their axis (`angular_speed` or `angle` given).
+    pub fn turns_about_axis(&self) -> bool {
+        self.angular_speed.is_some() || self.angle.is_some()
+    }
+
+    /// The sliding's amplitude and speed as the kinematics use them: u₀ (mm) and v (mm/s),
+    /// or for a turn about the axis θ₀ (rad) and ω (rad/s), the sliding of a point at 1 mm.
+    pub fn sliding_scale(&self) -> (f64, f64) {
+        if self.turns_about_axis() {
+            (self.angle.unwrap_or(0.0), self.angular_speed.unwrap_or(0.0))
+        } else {
+            (self.amplitude, self.speed)
+        }
+    }
+
+    /// A turn's keys against the plane sliding's: `angle` (rad) replaces `amplitude`,
+    /// `angular_speed` (rad/s) replaces `speed`, each belongs to its own kind of sliding, and a
+    /// turn has no sliding distance (it is ω r: it depends on the radius). The error names the
+    /// key.
+    pub fn check_turn(&self) -> Result<(), (String, String)> {
+        let bad = |k: &str, m: &str| Err((format!("wear.{k}"), m.to_string()));
+        if !self.turns_about_axis() {
+            return Ok(());
+        }
+        let monotonic = self.sliding == "monotonic";
+        if self.angle.is_some() && monotonic {
+            return bad("angle", "is the amplitude of a turn to and fro (sliding = \"reciprocating\"); a turn one way gives angular_speed (rad/s)");
+        }
+        if self.angular_speed.is_some() && !monotonic {
+            return bad("angular_speed", "is the speed of a turn one way (sliding = \"monotonic\"); a turn to and fro gives angle (rad) and omega (rad/s)");
+        }
+        if self.amplitude != 0.0 {
+            return bad(
+                "amplitude",
+                "a turn about the axis gives its amplitude as angle (rad); remove amplitude",
+            );
+        }
+        if self.speed != 0.0 {
+            return bad(
+                "speed",
+                "a turn about the axis gives its speed as angular_speed (rad/s); remove speed",
+            );
+        }
+        if self.distance.is_some() {
+            return bad("distance", "a turn's sliding distance depends on the radius (ω r): give its duration as steps, cycles or time (s)");
+        }
+        if !self.record_distance.is_empty() {
+            return bad("record_distance", "a turn's sliding distance depends on the radius (ω r): record by record_time (s), record_cycles or record (steps)");
+        }
+        Ok(())
+    }
+}
+
 fn implicit() -> String {
     "implicit".into()
 }
@@ -206,6 +272,10 @@ pub struct StepRecord {
     pub dissipation: f64,
     /// Pressure at each probe (nearest contact point), MPa, in probe order.
     pub probes: Vec<f64>,
+    /// Bodies of revolution turning about their axis: the friction torque about the axis at
+    /// the step's pressure, T = ∫ μ p r dA, N·mm.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub torque: Option<f64>,
     /// Largest δw = Δw − min Δw over the cycle ending here (paper eq. 40), mm; 0 after '+' steps.
     pub delta_w: f64,
     /// With heat: the temperature at each probe at the step's end, °C, in probe order.
@@ -337,6 +407,11 @@ pub struct WearIntegrator {
     pub first_direction: Direction,
     /// The heat problem, for a problem with `[heat]` (see [`thermal`]).
     pub heat: Option<std::sync::Arc<thermal::ThermalModel>>,
+    /// Bodies of revolution turning about their axis: where the points lie from it
+    /// ([`WearIntegrator::turn_about_axis`]).
+    about_axis: Option<AxisRotation>,
+    /// With `about_axis`: each law's sliding factor rᵃ at each point (one row per law).
+    point_factor: Vec<Vec<f64>>,
 }
 
 impl WearIntegrator {
@@ -373,16 +448,23 @@ impl WearIntegrator {
                 }
             }
         }
+        spec.check_turn()?;
+        let (amplitude, speed) = spec.sliding_scale();
+        let turn = spec.turns_about_axis();
         match spec.sliding.as_str() {
             "reciprocating" => {
-                if !(spec.amplitude > 0.0 && spec.amplitude.is_finite()) {
-                    return bad(
-                        "amplitude",
-                        format!(
-                            "reciprocating sliding needs u₀ > 0 (mm), got {}",
-                            spec.amplitude
-                        ),
-                    );
+                if !(amplitude > 0.0 && amplitude.is_finite()) {
+                    return if turn {
+                        bad(
+                            "angle",
+                            format!("a turn to and fro needs θ₀ > 0 (rad), got {amplitude}"),
+                        )
+                    } else {
+                        bad(
+                            "amplitude",
+                            format!("reciprocating sliding needs u₀ > 0 (mm), got {amplitude}"),
+                        )
+                    };
                 }
                 if !(spec.omega > 0.0 && spec.omega.is_finite()) {
                     return bad(
@@ -395,9 +477,15 @@ impl WearIntegrator {
                 }
             }
             "monotonic" => {
-                if !(spec.speed > 0.0
+                if turn && !(speed > 0.0 && speed.is_finite()) {
+                    return bad(
+                        "angular_speed",
+                        format!("a turn one way needs ω > 0 (rad/s), got {speed}"),
+                    );
+                }
+                if !(speed > 0.0
                     && spec.step_time > 0.0
-                    && spec.speed.is_finite()
+                    && speed.is_finite()
                     && spec.step_time.is_finite())
                 {
                     return bad("speed", format!("monotonic sliding needs speed > 0 (mm/s) and step_time > 0 (s), got {} and {}", spec.speed, spec.step_time));
@@ -494,6 +582,8 @@ impl WearIntegrator {
             law_bodies,
             first_direction: Direction::Plus,
             heat: None,
+            about_axis: None,
+            point_factor: Vec::new(),
         };
         for (name, law) in [("body1", spec.body1), ("body2", spec.body2)] {
             if let Some(l) = law {
@@ -527,6 +617,44 @@ impl WearIntegrator {
             .collect()
     }
 
+    /// The wear of one half period (step) at every contact point ([`WearTerms`]): the same
+    /// terms everywhere, or under a turn about the axis each point's own (c rᵃ).
+    pub fn wear_terms(&self) -> WearTerms {
+        let terms = self.half_period_wear();
+        if self.about_axis.is_some() {
+            WearTerms::scaled_per_point(&terms, &self.point_factor)
+        } else {
+            WearTerms::uniform(&terms)
+        }
+    }
+
+    /// Make the sliding a turn about the axis of bodies of revolution: point i slides
+    /// `rotation.factor(i, a)` times the sliding of `wear.angle` or `wear.angular_speed`.
+    /// The error names the key: a spec without those keys is not a turn.
+    pub fn turn_about_axis(&mut self, rotation: AxisRotation) -> Result<(), (String, String)> {
+        if !self.spec.turns_about_axis() {
+            let key = if self.is_monotonic() {
+                "wear.angular_speed"
+            } else {
+                "wear.angle"
+            };
+            return Err((key.into(), "the bodies turn about their axis (contact.sliding_motion = \"about_axis\"): give the turn's angular_speed (rad/s, sliding = \"monotonic\") or angle (rad, sliding = \"reciprocating\") instead of speed or amplitude".into()));
+        }
+        self.point_factor = self.laws.iter().map(|l| rotation.factors(l.a)).collect();
+        self.about_axis = Some(rotation);
+        Ok(())
+    }
+
+    /// The turn about the axis, if the sliding is one.
+    pub fn about_axis(&self) -> Option<&AxisRotation> {
+        self.about_axis.as_ref()
+    }
+
+    /// Law `law`'s sliding factor at point `i`: 1, or rᵃ under a turn about the axis.
+    fn factor(&self, law: usize, i: usize) -> f64 {
+        self.point_factor.get(law).map_or(1.0, |f| f[i])
+    }
+
     /// The wear law of body `body` (0: body 1, 1: body 2), if it wears (β̃ > 0).
     pub fn law_of(&self, body: usize) -> Option<WearLaw> {
         self.law_bodies
@@ -553,24 +681,26 @@ impl WearIntegrator {
     /// Sliding integral ∫|v|ᵃ dτ of one half period (or one monotonic step).
     fn sliding(&self, a: f64) -> f64 {
         if self.spec.sliding == "monotonic" {
-            self.spec.speed.powf(a) * self.spec.step_time
+            let (_, speed) = self.spec.sliding_scale();
+            speed.powf(a) * self.spec.step_time
         } else {
-            half_period_sliding(self.spec.amplitude, self.spec.omega, a)
+            let (amplitude, _) = self.spec.sliding_scale();
+            half_period_sliding(amplitude, self.spec.omega, a)
         }
     }
 
     /// Wear gap increment of one half period at pressures `p` (mm), scaled by `scale`.
     fn wear_increment(&self, p: &[f64], sliding: &[f64], scale: f64, out: &mut [f64]) {
         out.iter_mut().for_each(|w| *w = 0.0);
-        for (law, s) in self.laws.iter().zip(sliding) {
-            for (w, &pi) in out.iter_mut().zip(p) {
+        for (l, (law, s)) in self.laws.iter().zip(sliding).enumerate() {
+            for (i, (w, &pi)) in out.iter_mut().zip(p).enumerate() {
                 // pow(x, 1) is x exactly: the linear law (every adaptive step) skips the call.
                 let pb = if law.b == 1.0 {
                     pi.max(0.0)
                 } else {
                     pi.max(0.0).powf(law.b)
                 };
-                *w += scale * law.beta * pb * s;
+                *w += scale * law.beta * pb * s * self.factor(l, i);
             }
         }
     }

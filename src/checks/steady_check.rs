@@ -149,7 +149,7 @@ pub fn check(
     let solved = match integrator.heat.as_ref() {
         None => steady_state_near(
             contact,
-            &integrator.half_period_wear(),
+            integrator.wear_terms(),
             sliding,
             Default::default(),
             Some(&near),

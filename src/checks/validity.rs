@@ -51,13 +51,14 @@ pub fn half_period_pressure_change(
     shape: &[f64],
     pressures: &[(Direction, &[f64])],
 ) -> Result<f64, String> {
-    let terms = integrator.half_period_wear();
+    let terms = integrator.wear_terms();
     let mut worn = shape.to_vec();
     let mut change: f64 = 0.0;
     for &(direction, pressure) in pressures {
         let d = direction.symbol();
-        for ((w, g), p) in worn.iter_mut().zip(shape).zip(pressure) {
+        for (i, ((w, g), p)) in worn.iter_mut().zip(shape).zip(pressure).enumerate() {
             *w = g + terms
+                .at(i)
                 .iter()
                 .map(|(c, b)| c * p.max(0.0).powf(*b))
                 .sum::<f64>();

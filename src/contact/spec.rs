@@ -51,6 +51,11 @@ pub struct ContactSpec {
     /// steps of at most 1/16 of body 1's contact edge, at least 4; see
     /// [`crate::contact::track::default_positions`]).
     pub positions: Option<usize>,
+    /// How the bodies slide: "in_plane" (default; along the contact edge, friction in the
+    /// plane of the section) or "about_axis" (bodies of revolution turning about their axis:
+    /// friction is circumferential, out of the (r, z) plane, and sets only the torque).
+    #[serde(default = "in_plane")]
+    pub sliding_motion: String,
 }
 
 /// A circular initial gap (a cylinder of radius `radius` mm touching at x = `center_x`).
@@ -82,6 +87,9 @@ impl ContactSpec {
     }
 }
 
+fn in_plane() -> String {
+    "in_plane".into()
+}
 fn fixed() -> String {
     "fixed".into()
 }
@@ -225,6 +233,22 @@ pub(super) fn contact_section(
         .contact
         .as_ref()
         .ok_or_else(|| problem.error("contact", "this problem has no [contact] section"))?;
+    match c.sliding_motion.as_str() {
+        "in_plane" => {}
+        "about_axis" if problem.analysis.is_axisymmetric() => {}
+        "about_axis" => {
+            return Err(problem.error(
+                "contact.sliding_motion",
+                "\"about_axis\" is a turn of bodies of revolution about their axis, and this analysis is plane; give analysis.kind = \"axisymmetric\" or \"in_plane\"",
+            ))
+        }
+        other => {
+            return Err(problem.error(
+                "contact.sliding_motion",
+                format!("must be \"in_plane\" or \"about_axis\", got \"{other}\""),
+            ))
+        }
+    }
     if problem.analysis.is_axisymmetric() {
         check_axisymmetric(problem, c)?;
     }
@@ -329,10 +353,11 @@ pub(super) fn check_plate(problem: &Problem, plate: &PlateSpec) -> Result<(), Pr
     }
 }
 
-/// What contact between bodies of revolution supports so far (issue 31, built in steps): one
-/// contact solve (`contact`, and `elastic`), with the plate translating along the axis. A
-/// plate that turns is not axisymmetric; wear, heat and sliding pairs of bodies of revolution
-/// are not built yet.
+/// What contact between bodies of revolution supports so far (issue 31, built in steps): the
+/// contact solve with the plate translating along the axis, frictionless or turning about the
+/// axis (`contact.sliding_motion = "about_axis"`, whose friction is circumferential), and the
+/// wear of such a turn. A plate that turns is not axisymmetric; sliding along the axis, heat
+/// and sliding pairs of bodies of revolution are not built yet.
 fn check_axisymmetric(problem: &Problem, c: &ContactSpec) -> Result<(), ProblemError> {
     if let Some(plate) = &problem.spec.plate {
         if plate.motion != "vertical" && plate.motion != "fixed" {
@@ -348,14 +373,14 @@ fn check_axisymmetric(problem: &Problem, c: &ContactSpec) -> Result<(), ProblemE
             "sliding pairs of bodies of revolution are not built yet",
         ));
     }
-    if c.friction != 0.0 {
+    if c.friction != 0.0 && c.sliding_motion != "about_axis" {
         // In the (r, z) plane friction along a face's radial tangent would be a slip outwards
         // (or inwards) all round, which no motion of the plate makes (a review: a ball on an
         // aluminium flat pressed 25 % less or 34 % more at its centre with μ = 0.5, in
         // silence).
         return Err(problem.error(
             "contact.friction",
-            format!("{}: friction between bodies of revolution is not built yet (a turn about the axis makes it circumferential, out of the (r, z) plane; sliding along the axis is the next step); give 0", c.friction),
+            format!("{}: friction between bodies of revolution sliding along the axis is not built yet; give 0, or set contact.sliding_motion = \"about_axis\" for bodies turning about their axis (the friction is then circumferential, out of the (r, z) plane, and sets the torque)", c.friction),
         ));
     }
     if problem.spec.heat.is_some() {

@@ -56,6 +56,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         "axisymmetric-punch",
         include_str!("../../examples/axisymmetric-punch.toml"),
     ),
+    (
+        "thrust-washer",
+        include_str!("../../examples/thrust-washer.toml"),
+    ),
 ];
 
 /// The text of built-in example `name`.

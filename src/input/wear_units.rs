@@ -123,6 +123,27 @@ fn check_kinematics(spec: &WearSpec) -> Result<(), KeyError> {
             Err((format!("wear.{key}"), format!("{what}, got {value}")))
         }
     };
+    spec.check_turn()?;
+    let (amplitude, speed) = spec.sliding_scale();
+    match (spec.sliding.as_str(), spec.turns_about_axis()) {
+        ("reciprocating", true) => {
+            positive("angle", amplitude, "a turn to and fro needs θ₀ > 0 (rad)")?;
+            return positive(
+                "omega",
+                spec.omega,
+                "reciprocating sliding needs ω > 0 (rad/s)",
+            );
+        }
+        ("monotonic", true) => {
+            positive("angular_speed", speed, "a turn one way needs ω > 0 (rad/s)")?;
+            return positive(
+                "step_time",
+                spec.step_time,
+                "monotonic sliding needs a step time > 0 (s)",
+            );
+        }
+        _ => {}
+    }
     match spec.sliding.as_str() {
         "reciprocating" => {
             positive(

@@ -121,17 +121,46 @@ fn axisymmetric_json() -> Value {
     })
 }
 
-/// Refuse a wear job (`what`) on bodies of revolution, naming the key: their sliding (a turn
-/// about the axis at ω r, or reciprocation along it) is not built yet, and a plane wear rule
-/// would be a wrong answer for them.
+/// Refuse a wear job (`what`) on bodies of revolution unless they turn about their axis
+/// (`contact.sliding_motion = "about_axis"`), naming the key: their sliding along the axis is
+/// not built yet, and a plane wear rule would be a wrong answer for them.
 pub fn require_plane_wear(problem: &Problem, what: &str) -> Result<(), ProblemError> {
-    if problem.analysis.is_axisymmetric() {
+    let about_axis = problem
+        .spec
+        .contact
+        .as_ref()
+        .is_some_and(|c| c.sliding_motion == "about_axis");
+    if problem.analysis.is_axisymmetric() && !about_axis {
         return Err(problem.error(
-            "analysis.kind",
-            format!("is \"axisymmetric\", and {what} of bodies of revolution is not built yet (their sliding turns about the axis or runs along it); `wearfem contact` and `wearfem elastic` solve them"),
+            "contact.sliding_motion",
+            format!("is \"in_plane\" on bodies of revolution, and {what} of bodies of revolution sliding along their axis is not built yet; bodies turning about their axis (a thrust washer, a clutch) give \"about_axis\""),
         ));
     }
     Ok(())
+}
+
+/// Make `integrator`'s sliding the turn about the axis of `contact`'s bodies of revolution
+/// when the contact says they turn (`contact.sliding_motion = "about_axis"`); the wear keys of
+/// a turn (`angle`, `angular_speed`) without it are refused by name.
+pub fn attach_turn(
+    problem: &Problem,
+    integrator: &mut WearIntegrator,
+    contact: &CondensedContact,
+) -> Result<(), ProblemError> {
+    match contact.friction_about_axis {
+        Some(friction) => integrator
+            .turn_about_axis(crate::wear::AxisRotation::new(contact, friction))
+            .map_err(|(key, message)| problem.error(key, message)),
+        None if integrator.spec.turns_about_axis() => {
+            let key = if integrator.is_monotonic() {
+                "wear.angular_speed"
+            } else {
+                "wear.angle"
+            };
+            Err(problem.error(key, "is a turn about the axis of bodies of revolution; give contact.sliding_motion = \"about_axis\" with analysis.kind = \"axisymmetric\", or the plane sliding's speed or amplitude"))
+        }
+        None => Ok(()),
+    }
 }
 
 /// The solver method named in the problem's `[contact]` section
@@ -421,7 +450,7 @@ pub fn steady_with_heat(
         .wear
         .clone()
         .ok_or_else(|| problem.error("wear", "this problem has no [wear] section"))?;
-    let integrator =
+    let mut integrator =
         WearIntegrator::new(&spec).map_err(|(key, message)| problem.error(key, message))?;
     // The steady state solves no single contact problem, so neither the method nor (for
     // reciprocating sliding) the first direction is used; a bad name is refused all the same,
@@ -432,6 +461,7 @@ pub fn steady_with_heat(
     let (contact, body1, body2) = CondensedContact::build(problem)?;
     check_contact_probes(problem, &contact)?;
     check_shape_zero(problem, &contact)?;
+    attach_turn(problem, &mut integrator, &contact)?;
     let sliding = if integrator.is_monotonic() {
         crate::steady::SteadySliding::Monotonic(direction(problem)?)
     } else {
@@ -444,7 +474,7 @@ pub fn steady_with_heat(
         };
         problem.error(key, e.to_string())
     };
-    let terms = integrator.half_period_wear();
+    let terms = integrator.wear_terms();
     let (state, heat) = match super::heat::thermal_model(problem, &contact, [&body1, &body2])? {
         None => (
             crate::steady::steady_state(&contact, &terms, sliding, Default::default())
@@ -453,9 +483,10 @@ pub fn steady_with_heat(
         ),
         Some(model) => {
             let model = std::sync::Arc::new(model);
+            // (Heat is plane only, [`crate::contact`]: the same terms at every point.)
             let solved = crate::thermal_steady::steady_state_with_heat(
                 &contact,
-                &terms,
+                &integrator.half_period_wear(),
                 sliding,
                 Default::default(),
                 &model,
@@ -480,6 +511,16 @@ pub fn steady_by(
 ) -> Result<(crate::paper_steady::MethodOutcome, CondensedContact, f64), JobError> {
     super::sliding::require_fixed_pairs(problem, "the steady state")?;
     require_plane_wear(problem, "the steady state")?;
+    if problem.analysis.is_axisymmetric() && method != crate::paper_steady::SteadyMethod::Exact {
+        // Their splines and averages are laid out along a plane edge with one sliding
+        // distance; the exact method knows each point's own.
+        return Err(problem
+            .error(
+                "analysis.kind",
+                "is \"axisymmetric\": the paper's §6 methods (averaged, spline, penalty) are for plane problems; use --method exact (the default)",
+            )
+            .into());
+    }
     let spec = problem
         .spec
         .wear

@@ -15,6 +15,7 @@ use std::ops::ControlFlow;
 use std::time::Instant;
 
 mod console;
+mod turn;
 
 /// A finished wear run with its set-up.
 pub struct WearRun {
@@ -32,8 +33,12 @@ pub struct WearRun {
     /// the end of a run shortened by the `steps` argument, or after the last completed step of
     /// a run that stopped early (an adaptive run at the steady state, a failed solve).
     pub records_past_end: Vec<usize>,
-    /// Sliding distance of one half period (monotonic: of one step unit), mm.
+    /// Sliding distance of one half period (monotonic: of one step unit), mm; under a turn
+    /// about the axis the angle turned, rad (the sliding at r = 1 mm).
     pub sliding_per_half_period: f64,
+    /// Bodies of revolution turning about their axis: the turn (radii, μ) and its angular
+    /// speed ω (rad/s; for a turn to and fro its amplitude θ₀ω, the peak).
+    pub turn: Option<(crate::wear::AxisRotation, f64)>,
     /// Whether the sliding is monotonic: the steps' `half_period` counts step units
     /// (`wear.step_time` each) then.
     pub monotonic: bool,
@@ -145,6 +150,7 @@ pub fn wear_until(
     let (contact, body1, body2) = CondensedContact::build(problem)?;
     check_contact_probes(problem, &contact)?;
     check_shape_zero(problem, &contact)?;
+    super::driver::attach_turn(problem, &mut integrator, &contact)?;
     integrator.heat =
         super::heat::thermal_model(problem, &contact, [&body1, &body2])?.map(std::sync::Arc::new);
     let mut solver = ContactSolver::new(&contact, method(problem)?);
@@ -185,6 +191,15 @@ pub fn wear_until(
         records_past_end,
         sliding_per_half_period: integrator.sliding_per_half_period(),
         monotonic: integrator.is_monotonic(),
+        turn: integrator.about_axis().map(|t| {
+            let (angle, speed) = integrator.spec.sliding_scale();
+            let omega = if integrator.is_monotonic() {
+                speed
+            } else {
+                angle * integrator.spec.omega
+            };
+            (t.clone(), omega)
+        }),
         steady_check,
         shape_zero_at: spec.shape_zero_at,
         warnings: std::sync::OnceLock::new(),
@@ -400,6 +415,10 @@ impl WearRun {
             "run_seconds": self.run_seconds,
             "sliding_distance_m": number(half_periods as f64 * self.sliding_per_half_period / 1000.0),
         });
+        if let Some((turn, omega)) = &self.turn {
+            summary["sliding_distance_m"] = Value::Null;
+            summary["turn"] = self.turn_json(turn, *omega, half_periods);
+        }
         if monotonic {
             // One direction only: there is no '−' pressure and no sum of the two.
             if let Some(f) = summary["final"].as_object_mut() {

@@ -248,6 +248,10 @@ fn write_wear_tables(
         header.pop();
     }
     header.extend(run.probes.iter().map(|(n, _)| format!("p_{n}_MPa")));
+    let turn = run.turn.is_some();
+    if turn {
+        header.push("torque_Nmm".into());
+    }
     let heat = h.thermal.is_some();
     if heat {
         header.extend(run.probes.iter().map(|(n, _)| format!("T_{n}_C")));
@@ -271,6 +275,9 @@ fn write_wear_tables(
                 r.push(number(s.delta_w));
             }
             r.extend(s.probes.iter().map(|&v| number(v)));
+            if turn {
+                r.push(number(s.torque.unwrap_or(f64::NAN)));
+            }
             if heat {
                 r.extend(s.temperatures.iter().map(|&v| number(v)));
                 r.extend(s.max_temperature.unwrap_or([f64::NAN; 2]).map(number));

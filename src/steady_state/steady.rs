@@ -20,6 +20,7 @@ use crate::complementarity::Direction;
 use crate::contact::CondensedContact;
 use crate::dense::DenseLu;
 use crate::wear::law;
+use crate::wear::WearTerms;
 
 mod continuation;
 mod starts;
@@ -214,7 +215,7 @@ impl System<'_> {
     /// residuals), and the largest relative residual of the wear rows with their scale.
     fn linearise<'s>(
         &'s self,
-        terms: &[(f64, f64)],
+        terms: &WearTerms,
         z: &[f64],
         active: &'s [Vec<bool>],
     ) -> (Jacobian<'s, 's>, Vec<f64>, f64, f64, f64) {
@@ -261,7 +262,7 @@ impl System<'_> {
             let mut f = self.rigid_wear_gap(z, i);
             for (h, slope) in slope.iter_mut().enumerate() {
                 let (w, dw) = wear(
-                    terms,
+                    terms.at(i),
                     z[self.force(h, i)] / self.area[i],
                     self.reference_pressure,
                 );
@@ -286,7 +287,7 @@ impl System<'_> {
             active,
             slope,
             closest,
-            in_wear: law::is_concave(terms),
+            in_wear: terms.is_concave(),
         };
         (jacobian, rhs, residual, wear_scale, unbalanced)
     }
@@ -295,7 +296,7 @@ impl System<'_> {
     /// number of iterations.
     fn newton(
         &self,
-        terms: &[(f64, f64)],
+        terms: &WearTerms,
         z: &mut [f64],
         active: &mut [Vec<bool>],
         settings: SteadySettings,
@@ -314,7 +315,7 @@ impl System<'_> {
             if rhs.iter().zip(z.iter()).any(|(d, v)| !(v + d).is_finite()) {
                 return (SteadyStatus::Singular, iteration);
             }
-            if law::is_concave(terms) {
+            if terms.is_concave() {
                 self.step_in_wear(terms, &jacobian, z, &mut rhs);
             }
             for (zi, d) in z.iter_mut().zip(&rhs) {
@@ -357,14 +358,14 @@ impl System<'_> {
     /// step in the wear ([`law::step_in_wear`]): quadratic convergence where the step in the
     /// pressure with a secant slope converged at a rate of 1 − b (b = 0.2: 92 iterations on
     /// punch-b40, b = 0.1: none in 100).
-    fn step_in_wear(&self, terms: &[(f64, f64)], jacobian: &Jacobian, z: &[f64], step: &mut [f64]) {
+    fn step_in_wear(&self, terms: &WearTerms, jacobian: &Jacobian, z: &[f64], step: &mut [f64]) {
         for (h, active) in jacobian.active.iter().enumerate() {
             for i in (0..self.n).filter(|&i| active[i]) {
                 let force = self.force(h, i);
                 let area = self.area[i];
                 let (p_hat, p) = (z[force] / area, (z[force] + step[force]) / area);
                 let slope = jacobian.slope[h][i] * area;
-                let next = law::step_in_wear(terms, p_hat, slope, p);
+                let next = law::step_in_wear(terms.at(i), p_hat, slope, p);
                 step[force] = next * area - z[force];
             }
         }
@@ -373,7 +374,7 @@ impl System<'_> {
     /// Primal–dual active-set update; true if a set changed.
     fn update_active_sets(
         &self,
-        terms: &[(f64, f64)],
+        terms: &WearTerms,
         z: &mut [f64],
         active: &mut [Vec<bool>],
         wear_scale: f64,
@@ -440,7 +441,7 @@ impl System<'_> {
                 for &h in &entering {
                     active[h][i] = true;
                 }
-                if law::is_concave(terms) {
+                if terms.is_concave() {
                     // The point enters wearing what the rigid wear asks of it, shared by the
                     // halves it enters: for a concave law the pressure of that wear, not zero.
                     // From p = 0 (a secant to the mean pressure) its first step asked for far
@@ -448,7 +449,8 @@ impl System<'_> {
                     // went in and out with period 5 (the load on the punch's last 5 mm).
                     let share = -self.rigid_wear_gap(z, i) / entering.len() as f64;
                     for &h in &entering {
-                        z[self.force(h, i)] = self.area[i] * law::pressure_of_wear(terms, share);
+                        z[self.force(h, i)] =
+                            self.area[i] * law::pressure_of_wear(terms.at(i), share);
                     }
                 }
                 changed = true;
@@ -490,7 +492,7 @@ pub fn failure_hint(state: &SteadyState, contact: &CondensedContact) -> String {
 /// converge, the solve is repeated by continuation in the exponents from b = 1.
 pub fn steady_state(
     contact: &CondensedContact,
-    terms: &[(f64, f64)],
+    terms: impl Into<WearTerms>,
     sliding: SteadySliding,
     settings: SteadySettings,
 ) -> Result<SteadyState, SteadyError> {
@@ -505,7 +507,7 @@ pub fn steady_state(
 /// at 1025 points: 0.36 s cold). Should the start lead nowhere, the cold start follows.
 pub fn steady_state_near(
     contact: &CondensedContact,
-    terms: &[(f64, f64)],
+    terms: impl Into<WearTerms>,
     sliding: SteadySliding,
     settings: SteadySettings,
     near: Option<&[&[f64]]>,
@@ -520,17 +522,18 @@ pub fn steady_state_near(
 /// the pressures.
 pub fn steady_state_with_offsets(
     contact: &CondensedContact,
-    terms: &[(f64, f64)],
+    terms: impl Into<WearTerms>,
     sliding: SteadySliding,
     settings: SteadySettings,
     near: Option<&[&[f64]]>,
     offsets: &[Vec<f64>],
 ) -> Result<SteadyState, SteadyError> {
+    let terms = &terms.into();
     let (n, m) = (contact.len(), contact.rigid_modes.len());
     if m == 0 {
         return Err(SteadyError::NoRigidMotion);
     }
-    if terms.iter().all(|t| t.0 == 0.0) {
+    if terms.none_wear() {
         return Err(SteadyError::NoWear);
     }
     // Without friction the halves are one problem, unless their offsets differ.
@@ -564,7 +567,7 @@ pub fn steady_state_with_offsets(
     let (mut z, mut active) = start.clone();
     let (mut status, iterations) = system.newton(terms, &mut z, &mut active, settings);
     used += iterations;
-    if status != SteadyStatus::Solved && terms.iter().any(|t| t.1 != 1.0) {
+    if status != SteadyStatus::Solved && terms.is_nonlinear() {
         // Far from b = 1 the full Newton step from a uniform pressure can wander between
         // active sets; walk there from the linear problem instead.
         (z, active) = start.clone();
@@ -597,11 +600,11 @@ pub fn steady_state_with_offsets(
 /// p = L(x)¹⁰, 1e-20 of the peak, still wearing a few % of the most), and they cycled.
 fn frictionless_reciprocating(
     contact: &CondensedContact,
-    terms: &[(f64, f64)],
+    terms: &WearTerms,
     settings: SteadySettings,
     near: Option<&[&[f64]]>,
 ) -> SteadyState {
-    let doubled: Vec<(f64, f64)> = terms.iter().map(|&(c, b)| (2.0 * c, b)).collect();
+    let doubled = terms.scaled(2.0);
     let one_half = SteadySliding::Monotonic(Direction::Plus);
     let near = near.and_then(|p| p.get(..1));
     let mut state = steady_state_near(contact, &doubled, one_half, settings, near)
@@ -617,7 +620,7 @@ impl System<'_> {
     fn state(
         &self,
         sliding: SteadySliding,
-        terms: &[(f64, f64)],
+        terms: &WearTerms,
         z: &[f64],
         status: SteadyStatus,
         iterations: usize,
@@ -633,9 +636,9 @@ impl System<'_> {
         let mut wear_residual = 0.0f64;
         let mut wear_scale = 0.0f64;
         for i in 0..n {
-            let mut w = law::half_period_wear(terms, p_plus[i]);
+            let mut w = law::half_period_wear(terms.at(i), p_plus[i]);
             if halves == 2 {
-                w += law::half_period_wear(terms, p_minus[i]);
+                w += law::half_period_wear(terms.at(i), p_minus[i]);
             }
             wear_scale = wear_scale.max(w);
             let closing = w + self.rigid_wear_gap(z, i);

@@ -58,7 +58,7 @@ impl WearIntegrator {
             *own = contact.a_nn[i * n + i] * ws.area[i];
         }
         ws.sliding = self.laws.iter().map(|l| self.sliding(l.a)).collect();
-        ws.terms = self.half_period_wear();
+        ws.terms = self.wear_terms();
         let rigid = contact.rigid_gap_matrix();
         let m = contact.rigid_modes.len();
         let mut shape = initial.to_vec();
@@ -307,6 +307,9 @@ impl WearIntegrator {
                 criterion: outcome.criterion,
                 dissipation,
                 probes: probe_points.iter().map(|&i| pressure[i]).collect(),
+                torque: self
+                    .about_axis()
+                    .map(|turn| turn.torque(pressure, &ws.area)),
                 delta_w,
                 temperatures,
                 max_temperature,
@@ -378,11 +381,12 @@ impl WearIntegrator {
     /// Add `k` half periods of each wearing body's wear at `pressure` (MPa) to `worn` (mm,
     /// one array per body), `sliding` being each law's ∫|v|ᵃ dτ.
     fn accumulate_wear(&self, pressure: &[f64], sliding: &[f64], k: f64, worn: &mut [Vec<f64>; 2]) {
-        for ((law, &body), s) in self.laws.iter().zip(&self.law_bodies).zip(sliding) {
+        let laws = self.laws.iter().zip(&self.law_bodies).zip(sliding);
+        for (l, ((law, &body), s)) in laws.enumerate() {
             let c = k * law.beta * s;
-            for (w, &p) in worn[body].iter_mut().zip(pressure) {
+            for (i, (w, &p)) in worn[body].iter_mut().zip(pressure).enumerate() {
                 let p = p.max(0.0);
-                *w += c * if law.b == 1.0 { p } else { p.powf(law.b) };
+                *w += c * self.factor(l, i) * if law.b == 1.0 { p } else { p.powf(law.b) };
             }
         }
     }
@@ -601,13 +605,8 @@ impl WearIntegrator {
         let kf = k;
         let linear = self.laws.iter().all(|l| l.b == 1.0);
         if linear {
-            let c: f64 = self
-                .laws
-                .iter()
-                .zip(&ws.sliding)
-                .map(|(l, s)| l.beta * s)
-                .sum();
             for i in 0..n {
+                let c: f64 = ws.terms.at(i).iter().map(|t| t.0).sum();
                 ws.compliance[i] = kf * c / ws.area[i];
             }
             solver.set_compliance(&ws.compliance);
@@ -636,12 +635,13 @@ impl WearIntegrator {
             iterations += 1;
             for i in 0..n {
                 let p = ws.linearised_at[i];
+                let terms = ws.terms.at(i);
                 let slope = if ws.chord[i] {
-                    law::chord_slope(&ws.terms, p, reference)
+                    law::chord_slope(terms, p, reference)
                 } else {
-                    law::newton_slope(&ws.terms, p, reference, true)
+                    law::newton_slope(terms, p, reference, true)
                 };
-                let w = law::half_period_wear(&ws.terms, p);
+                let w = law::half_period_wear(terms, p);
                 ws.compliance[i] = kf * slope / ws.area[i];
                 ws.trial[i] = shape[i] + ws.ahead[i] + kf * (w - slope * p);
                 ws.slope[i] = slope;
@@ -656,7 +656,7 @@ impl WearIntegrator {
             let pressure = &ws.solution.pressure;
             let (mut worst, mut largest) = (0.0f64, 0.0f64);
             for i in 0..n {
-                let exact = law::half_period_wear(&ws.terms, pressure[i]);
+                let exact = law::half_period_wear(ws.terms.at(i), pressure[i]);
                 let model = ws.linear_wear[i] + ws.slope[i] * pressure[i];
                 worst = worst.max((exact - model).abs());
                 largest = largest.max(exact);
@@ -664,7 +664,7 @@ impl WearIntegrator {
             error = worst / largest.max(f64::MIN_POSITIVE);
             let half = usize::from(2 * iterations > self.spec.max_iterations);
             least[half] = least[half].min(error);
-            let concave = law::is_concave(&ws.terms);
+            let concave = ws.terms.is_concave();
             let own_flexibility = &ws.own_flexibility;
             let points = ws.linearised_at.iter_mut().zip(pressure).zip(&ws.slope);
             for (i, (((at, &p), slope), chord)) in points.zip(&mut ws.chord).enumerate() {
@@ -678,7 +678,7 @@ impl WearIntegrator {
                     *chord = true;
                 }
                 *at = if p > 0.0 {
-                    law::balanced_step(&ws.terms, *at, *slope, p, own_flexibility[i] / kf)
+                    law::balanced_step(ws.terms.at(i), *at, *slope, p, own_flexibility[i] / kf)
                 } else {
                     p
                 };

@@ -41,7 +41,7 @@ pub(super) struct Workspace {
     /// ∫|v|ᵃ dτ of one half period for each wear law.
     pub sliding: Vec<f64>,
     /// The wear law of one half period, W(p) = Σ c pᵇ, as (c, b) pairs ([`crate::wear::law`]).
-    pub terms: Vec<(f64, f64)>,
+    pub terms: super::WearTerms,
     /// Lobatto weight × edge Jacobian of each contact point (mm), for eq. 27's integral.
     pub weight: Vec<f64>,
     /// Contact area w_i t of each point, mm².
@@ -89,7 +89,7 @@ impl Workspace {
     pub fn new(n: usize) -> Workspace {
         Workspace {
             sliding: vec![],
-            terms: vec![],
+            terms: Default::default(),
             weight: vec![0.0; n],
             area: vec![0.0; n],
             own_flexibility: vec![0.0; n],

@@ -29,7 +29,14 @@ impl WearRun {
             Some(_) => vec!["no probes".to_string()],
             None => vec!["no steps".to_string()],
         };
-        let (duration, last) = if self.monotonic {
+        let (duration, last) = if let Some(words) = self.turn_words(units) {
+            let last = if self.monotonic {
+                "last step".to_string()
+            } else {
+                format!("last '{first}' half cycle")
+            };
+            (format!("{units} {}: {words}", self.time_axis()), last)
+        } else if self.monotonic {
             let step_time = problem.spec.wear.as_ref().map_or(0.0, |w| w.step_time);
             (
                 format!(

@@ -4,6 +4,7 @@
 use super::starts::unworn_pressures;
 use super::{frictionless_reciprocating, SteadySettings, SteadySliding, SteadyStatus, System};
 use crate::contact::CondensedContact;
+use crate::wear::WearTerms;
 
 /// What a retry from the frictionless problem ([`from_frictionless`]) came to.
 pub(super) struct Retry {
@@ -31,7 +32,7 @@ pub(super) fn from_frictionless(
     contact: &CondensedContact,
     sliding: SteadySliding,
     signs: &[f64],
-    terms: &[(f64, f64)],
+    terms: &WearTerms,
     settings: SteadySettings,
 ) -> Retry {
     let mut frictionless = contact.clone();
@@ -91,17 +92,12 @@ pub(super) fn from_frictionless(
 /// Newton solves for the exponents 1 + t (b − 1), t from 0 to 1 ([`walk`]).
 pub(super) fn in_exponents(
     system: &System,
-    terms: &[(f64, f64)],
+    terms: &WearTerms,
     z: &mut Vec<f64>,
     active: &mut Vec<Vec<bool>>,
     settings: SteadySettings,
 ) -> (SteadyStatus, usize) {
-    let stage = |t: f64| -> Vec<(f64, f64)> {
-        terms
-            .iter()
-            .map(|&(c, b)| (c, 1.0 + t * (b - 1.0)))
-            .collect()
-    };
+    let stage = |t: f64| terms.map(|c, b| (c, 1.0 + t * (b - 1.0)));
     let (status, iterations) = system.newton(&stage(0.0), z, active, settings);
     if status != SteadyStatus::Solved {
         return (status, iterations);
