@@ -97,6 +97,8 @@ pub struct CondensedContact {
     pub thickness: f64,
     /// Points on the axis of a body of revolution (empty in a plane analysis).
     pub axis_points: Vec<AxisPoint>,
+    /// Whether the bodies are bodies of revolution (x is the radius r).
+    pub axisymmetric: bool,
     /// Friction coefficient μ of the friction in the plane of the section (0 for bodies of
     /// revolution turning about their axis, whose friction is circumferential).
     pub friction: f64,
@@ -636,6 +638,7 @@ impl CondensedContact {
             points,
             thickness: t,
             axis_points,
+            axisymmetric: problem.analysis.is_axisymmetric(),
             friction: if about_axis { 0.0 } else { c.friction },
             friction_about_axis: about_axis.then_some(c.friction),
             a_nn,
@@ -817,6 +820,16 @@ impl CondensedContact {
             (&self.points.x, &self.points.initial_gap),
             modulus,
         )
+    }
+
+    /// The figures' label of the contact points' coordinate: "r (mm)" on bodies of
+    /// revolution, "x (mm)" otherwise.
+    pub fn position_label(&self) -> &'static str {
+        if self.axisymmetric {
+            "r (mm)"
+        } else {
+            "x (mm)"
+        }
     }
 
     /// Whether there are no contact points.

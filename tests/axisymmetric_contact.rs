@@ -245,15 +245,21 @@ fn what_is_not_built_for_bodies_of_revolution_is_refused_by_name() {
         .map(|_| ())
         .expect_err("refused");
     assert_eq!(e.key, "plate.motion");
-    // Wear runs and steady states wait for the sliding of bodies of revolution.
+    // Wear runs and steady states of bodies sliding along their axis are not built yet.
     let worn = format!(
         "{text}[wear]\nbody1 = {{ beta = 1.0e-6 }}\nsliding = \"reciprocating\"\namplitude = 1.0\nomega = 10.0\nsteps = 2\n"
     );
     let problem = Problem::from_toml(&worn, "worn.toml").unwrap();
     let run = wearfem::driver::wear(&problem, None, |_| {}).map(|_| ());
-    assert!(run.unwrap_err().to_string().contains("analysis.kind"));
+    assert!(run
+        .unwrap_err()
+        .to_string()
+        .contains("contact.sliding_motion"));
     let steady = wearfem::driver::steady(&problem).map(|_| ());
-    assert!(steady.unwrap_err().to_string().contains("analysis.kind"));
+    assert!(steady
+        .unwrap_err()
+        .to_string()
+        .contains("contact.sliding_motion"));
 }
 
 #[test]
@@ -276,7 +282,8 @@ fn review_findings_stay_fixed() {
         on_axis[0],
         near_axis[0]
     );
-    // Friction between bodies of revolution is refused until their sliding is built.
+    // Friction between bodies of revolution sliding along their axis is refused until that
+    // sliding is built.
     let rough = exact.replace("friction = 0.0", "friction = 0.5");
     let problem = Problem::from_toml(&rough, "rough.toml").unwrap();
     let e = CondensedContact::build(&problem)

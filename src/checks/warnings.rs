@@ -311,6 +311,13 @@ pub fn model_warnings(
     let Some(wear) = problem.spec.wear.as_ref() else {
         return warnings;
     };
+    if wear.turns_about_axis() {
+        // A turn about the axis of bodies of revolution: every point of either body stays on
+        // its own circle, which the contact covers all round, so the fixed pairs are exact
+        // for both bodies' wear and the stroke warnings below do not apply.
+        warnings.extend(turn_on_axis_warning(problem, contact, pressures));
+        return warnings;
+    }
     if problem
         .spec
         .contact
@@ -365,6 +372,29 @@ pub fn model_warnings(
         ));
     }
     warnings
+}
+
+/// A warning when bodies of revolution turning about their axis touch on it: the sliding
+/// speed ω r vanishes there, so the steady pressure pᵇ (ω r)ᵃ = const is unbounded at r = 0,
+/// and the worn contact tends to it. The values at the axis point are those of the small disc
+/// it stands for ([`crate::contact::AxisPoint`]), not point values.
+fn turn_on_axis_warning(
+    problem: &Problem,
+    contact: &CondensedContact,
+    pressures: &[&[f64]],
+) -> Option<String> {
+    let axis = contact.axis_points.first()?.point;
+    let loaded = pressures
+        .iter()
+        .any(|p| p.get(axis).is_some_and(|&v| v > 0.0));
+    let rho = (contact.points.weight[axis] / std::f64::consts::PI).sqrt();
+    loaded.then(|| {
+        warning(
+            "turn-on-axis",
+            &problem.file,
+            format!("the bodies turn about their axis and touch on it, where nothing slides: the steady pressure pᵇ(ωr)ᵃ = const is unbounded at r = 0, and the worn contact tends to it. The pressure and wear given at r = 0 are the extrapolation of the neighbouring points' and the wear of the disc r < {rho:.3e} mm about the axis, not point values; the load, the torque and the worn volumes are not affected"),
+        )
+    })
 }
 
 /// A warning when `plate.motion = "fixed"` and tractions act on the plate edge: the fixed

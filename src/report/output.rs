@@ -75,6 +75,8 @@ fn plot_error(path: &Path) -> impl Fn(String) -> OutputError + '_ {
 pub struct Profiles<'a> {
     /// x of the contact points, mm.
     pub x: &'a [f64],
+    /// The figures' label of x ([`crate::contact::CondensedContact::position_label`]).
+    pub x_label: &'static str,
     /// '+' half-cycle pressure, MPa.
     pub p_plus: &'a [f64],
     /// '−' half-cycle pressure, MPa (None for monotonic sliding).
@@ -156,7 +158,7 @@ impl Profiles<'_> {
         line_plot(
             &path,
             &format!("{title}: contact pressure"),
-            "x (mm)",
+            self.x_label,
             "pressure (MPa)",
             &series,
         )
@@ -180,7 +182,8 @@ impl Profiles<'_> {
             label: "shape",
             points: shape_points,
         }];
-        line_plot(&path, &shape_title, "x (mm)", "shape (mm)", &shape).map_err(plot_error(&path))
+        line_plot(&path, &shape_title, self.x_label, "shape (mm)", &shape)
+            .map_err(plot_error(&path))
     }
 }
 
@@ -291,6 +294,7 @@ fn write_wear_tables(
     let final_wear = run.wear_of(&h.shape);
     let profiles = Profiles {
         x: &x,
+        x_label: run.contact.position_label(),
         p_plus: &h.p_plus,
         p_minus: (!monotonic).then_some(&h.p_minus[..]),
         shape: &h.shape,
@@ -407,6 +411,15 @@ pub fn steady_summary(
         "seconds": seconds,
     });
     let mut summary = summary;
+    if let Some(friction) = contact.friction_about_axis {
+        // Bodies of revolution turning about their axis: the steady friction torque (the same
+        // in both halves of a turn to and fro, whose friction leaves the (r, z) problem).
+        let turn = crate::wear::AxisRotation::new(contact, friction);
+        summary["turn"] = json!({
+            "friction": number(friction),
+            "torque_Nmm": number(turn.torque(&state.p_plus, &contact.areas())),
+        });
+    }
     if p_minus.is_none() {
         // Monotonic sliding has one pressure: no '−' or summed profiles.
         if let Some(s) = summary.as_object_mut() {
@@ -443,6 +456,7 @@ pub fn write_steady_summary(
     write_json(dir, "summary.json", summary)?;
     Profiles {
         x: &x,
+        x_label: contact.position_label(),
         p_plus: &state.p_plus,
         p_minus,
         shape: &state.shape,

@@ -312,7 +312,7 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
         }
         let figure = Figure {
             title: format!("{name}: contact pressure at the recorded steps, {text} half cycles"),
-            x_label: "x (mm)",
+            x_label: run.contact.position_label(),
             y_label: "pressure (MPa)",
             series,
             log_y: false,
@@ -332,7 +332,7 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
     if !series.is_empty() {
         let figure = Figure {
             title: format!("{name}: shape (wear gap) at the recorded steps"),
-            x_label: "x (mm)",
+            x_label: run.contact.position_label(),
             y_label: "shape (mm)",
             series,
             log_y: false,
@@ -340,7 +340,10 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
         };
         write_figure(&dir.join("shape_evolution.svg"), &figure)?;
     }
-    wear_figure(dir, name, &x, h)?;
+    wear_figure(dir, name, (&x, run.contact.position_label()), h)?;
+    if run.turn.is_some() {
+        torque_figure(dir, name, run)?;
+    }
     let by_direction = |d: &str, value: &dyn Fn(&crate::wear::StepRecord) -> f64| {
         h.steps
             .iter()
@@ -388,13 +391,36 @@ pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Res
     write_figure(&dir.join("delta_w.svg"), &figure)
 }
 
+/// `torque.svg`: the friction torque about the axis of bodies of revolution turning about it,
+/// step by step (N·m).
+fn torque_figure(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Result<(), String> {
+    let points: Vec<(f64, f64)> = run
+        .history
+        .steps
+        .iter()
+        .filter_map(|s| Some((s.half_period as f64, s.torque? / 1000.0)))
+        .collect();
+    let figure = Figure {
+        title: format!("{name}: friction torque about the axis"),
+        x_label: run.time_axis(),
+        y_label: "torque (N·m)",
+        series: vec![Series {
+            label: "T = ∫ μ p r dA",
+            points,
+        }],
+        log_y: false,
+        zero_y: false,
+    };
+    write_figure(&dir.join("torque.svg"), &figure)
+}
+
 /// `wear.svg`: the depth worn off each body that wears, and their sum, at the end of the run,
 /// in µm when the largest is below 0.1 mm: the wear's own scale, which the shape's (the
 /// initial gap plus the wear) hides on a curved body.
 fn wear_figure(
     dir: &Path,
     name: &str,
-    x: &[f64],
+    (x, x_label): (&[f64], &'static str),
     h: &crate::wear::WearHistory,
 ) -> Result<(), String> {
     let [one, two] = &h.body_wear;
@@ -438,7 +464,7 @@ fn wear_figure(
     }
     let figure = Figure {
         title: format!("{name}: depth worn off each body"),
-        x_label: "x (mm)",
+        x_label,
         y_label: unit,
         series,
         log_y: false,

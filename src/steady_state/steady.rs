@@ -528,7 +528,28 @@ pub fn steady_state_with_offsets(
     near: Option<&[&[f64]]>,
     offsets: &[Vec<f64>],
 ) -> Result<SteadyState, SteadyError> {
-    let terms = &terms.into();
+    let mut state = solve(contact, &terms.into(), sliding, settings, near, offsets)?;
+    // On bodies of revolution the axis point's force says nothing of the pressure there: it
+    // is read from its neighbours, as the contact solve reads it ([`crate::contact::AxisPoint`]).
+    for axis in &contact.axis_points {
+        for pressure in [&mut state.p_plus, &mut state.p_minus] {
+            if !pressure.is_empty() {
+                pressure[axis.point] = axis.pressure(pressure);
+            }
+        }
+    }
+    Ok(state)
+}
+
+/// [`steady_state_with_offsets`] as solved, the axis points' pressure left as the solve's.
+fn solve(
+    contact: &CondensedContact,
+    terms: &WearTerms,
+    sliding: SteadySliding,
+    settings: SteadySettings,
+    near: Option<&[&[f64]]>,
+    offsets: &[Vec<f64>],
+) -> Result<SteadyState, SteadyError> {
     let (n, m) = (contact.len(), contact.rigid_modes.len());
     if m == 0 {
         return Err(SteadyError::NoRigidMotion);

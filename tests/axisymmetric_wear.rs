@@ -1,0 +1,380 @@
+//! Bodies of revolution turning about their axis (issue 31): a thrust washer on a disc, whose
+//! steady pressure makes pᵇ (ω r)ᵃ uniform (the clutch designer's "uniform wear"), against
+//! closed forms; the run reaching it; the torque; Archard's volume over the surface of
+//! revolution; and what a turn refuses.
+
+use std::f64::consts::PI;
+use wearfem::problem::Problem;
+
+/// A washer of radii `inner` … `outer` (mm, 5 mm thick) pressed with `force` N on a disc of
+/// radius 1.5 `outer` (10 mm thick, held at its base), turning at ω = 10 rad/s with friction
+/// μ = 0.3; `law` the washer's wear law (TOML), `p` the degree, `elements` across the washer.
+/// `aligned`: the disc's mesh lines under the washer's element ends (else the disc has its own
+/// uniform lines, non-matching).
+struct Washer {
+    inner: f64,
+    outer: f64,
+    force: f64,
+    law: &'static str,
+    p: usize,
+    elements: usize,
+    aligned: bool,
+    materials: [(f64, f64); 2],
+}
+
+impl Default for Washer {
+    fn default() -> Self {
+        Washer {
+            inner: 10.0,
+            outer: 20.0,
+            force: 2000.0,
+            law: "{ beta = 1.0e-8, a = 1.0, b = 1.0 }",
+            p: 6,
+            elements: 12,
+            aligned: true,
+            materials: [(1.1e5, 0.34), (2.1e5, 0.3)],
+        }
+    }
+}
+
+fn list(values: &[f64]) -> String {
+    let v: Vec<String> = values.iter().map(|x| format!("{x:.15}")).collect();
+    format!("[{}]", v.join(", "))
+}
+
+impl Washer {
+    fn text(&self, wear: &str) -> String {
+        let n = self.elements;
+        // Graded towards both edges (a sine spacing), where the new washer's pressure is
+        // singular.
+        let u: Vec<f64> = (0..=n)
+            .map(|i| 0.5 - 0.5 * (PI * i as f64 / n as f64).cos())
+            .collect();
+        let disc_radius = 1.5 * self.outer;
+        let disc_u: Vec<f64> = if self.aligned {
+            let mut lines = vec![0.0];
+            lines.extend(
+                u.iter()
+                    .map(|t| (self.inner + t * (self.outer - self.inner)) / disc_radius),
+            );
+            lines.push(1.0);
+            lines
+        } else {
+            (0..=37).map(|i| i as f64 / 37.0).collect()
+        };
+        let area = PI * (self.outer * self.outer - self.inner * self.inner);
+        let ([e1, n1], [e2, n2]) = (
+            [self.materials[0].0, self.materials[0].1],
+            [self.materials[1].0, self.materials[1].1],
+        );
+        format!(
+            r#"title = "a thrust washer"
+[analysis]
+kind = "axisymmetric"
+p = {p}
+[materials.washer]
+young = {e1}
+poisson = {n1}
+[materials.disc]
+young = {e2}
+poisson = {n2}
+[[bodies]]
+name = "washer"
+[[bodies.blocks]]
+corners = [[{ri}, 0.0], [{ro}, 0.0], [{ro}, 5.0], [{ri}, 5.0]]
+u = {u}
+v = [0, 0.02, 0.08, 0.25, 0.6, 1]
+material = "washer"
+names = {{ bottom = "face", top = "back" }}
+[[bodies.tractions]]
+edge = "back"
+normal = {traction}
+[[bodies]]
+name = "disc"
+[[bodies.blocks]]
+corners = [[0.0, -10.0], [{rd}, -10.0], [{rd}, 0.0], [0.0, 0.0]]
+u = {disc_u}
+v = [0, 0.4, 0.7, 0.9, 0.97, 1]
+material = "disc"
+names = {{ bottom = "base", top = "surface" }}
+[[bodies.supports]]
+edge = "base"
+fix = ["x", "z"]
+[contact]
+body = "washer"
+edge = "face"
+target_body = "disc"
+target_edge = "surface"
+friction = 0.3
+sliding_motion = "about_axis"
+align_target_mesh = {aligned}
+[plate]
+edge = "back"
+motion = "vertical"
+[wear]
+body1 = {law}
+{wear}
+"#,
+            p = self.p,
+            ri = self.inner,
+            ro = self.outer,
+            rd = disc_radius,
+            u = list(&u),
+            disc_u = list(&disc_u),
+            traction = self.force / area,
+            aligned = self.aligned,
+            law = self.law,
+        )
+    }
+
+    fn problem(&self, wear: &str) -> Problem {
+        Problem::from_toml(&self.text(wear), "washer.toml").unwrap()
+    }
+}
+
+const TURNING: &str = "sliding = \"monotonic\"\nangular_speed = 10.0\nstep_time = 5.0\nsteps = 300\nextrapolation = [{ until = 100, k = 1 }, { k = 10 }]";
+
+/// The steady pressure and the contact points' radii.
+fn steady(washer: &Washer, wear: &str) -> (Vec<f64>, Vec<f64>) {
+    let (state, contact, _) = wearfem::driver::steady(&washer.problem(wear)).unwrap();
+    assert_eq!(state.status, wearfem::steady::SteadyStatus::Solved);
+    let r = contact.points.x.iter().map(|x| x[0]).collect();
+    (r, state.p_plus)
+}
+
+/// The steady pressure makes pᵇ rᵃ uniform, with the constant the load sets: closed forms of
+/// F = ∫ p 2πr dr for p = (K/rᵃ)^(1/b).
+#[test]
+fn the_steady_washer_wears_uniformly() {
+    let (ri, ro, f) = (10.0f64, 20.0f64, 2000.0);
+    // (a, b, K): F = 2π K^(1/b) ∫ r^(1 − a/b) dr.
+    let cases: [(f64, f64, f64, &str); 4] = [
+        (
+            1.0,
+            1.0,
+            (f / (2.0 * PI * (ro - ri))),
+            "{ beta = 1.0e-8, a = 1.0, b = 1.0 }",
+        ),
+        (
+            1.0,
+            2.0,
+            (f / (2.0 * PI * (2.0 / 3.0) * (ro.powf(1.5) - ri.powf(1.5)))).powi(2),
+            "{ beta = 1.0e-8, a = 1.0, b = 2.0 }",
+        ),
+        (
+            2.0,
+            1.0,
+            f / (2.0 * PI * (ro / ri).ln()),
+            "{ beta = 1.0e-10, a = 2.0, b = 1.0 }",
+        ),
+        (
+            0.5,
+            0.7,
+            // ∫ r^(1 − 0.5/0.7) dr = [r^(2 − 5/7)/(2 − 5/7)].
+            {
+                let e = 2.0 - 0.5 / 0.7;
+                (f / (2.0 * PI * (ro.powf(e) - ri.powf(e)) / e)).powf(0.7)
+            },
+            "{ beta = 1.0e-8, a = 0.5, b = 0.7 }",
+        ),
+    ];
+    for (a, b, k, law) in cases {
+        for (p, elements, aligned) in [(6, 12, true), (4, 20, false), (8, 6, true)] {
+            let washer = Washer {
+                law,
+                p,
+                elements,
+                aligned,
+                ..Default::default()
+            };
+            let (r, pressure) = steady(&washer, TURNING);
+            for (ri_, pi_) in r.iter().zip(&pressure) {
+                let uniform = pi_.powf(b) * ri_.powf(a);
+                // The load's closed form is the discrete sum Σ 2π wᵢ K^(1/b) rᵢ^(1 − a/b) of the
+                // ring areas: exact for a = b = 1 (Lobatto's weights add up to r_o − r_i), and
+                // otherwise the Lobatto quadrature of the smooth r^(1 − a/b) on [10, 20] mm by
+                // 6–20 elements of degree 4–8, below 1e-12. Measured: 1.5e-15 at most.
+                let tolerance = 1e-9;
+                assert!(
+                    (uniform - k).abs() < tolerance * k,
+                    "a = {a}, b = {b}, p = {p}, {elements} elements: pᵇrᵃ = {uniform} at r = {ri_}, closed form {k}"
+                );
+            }
+        }
+    }
+}
+
+/// The torque of the steady washer, ∫ μ p r dA = μF(r_o + r_i)/2 for a = b = 1 (exact for the
+/// ring areas 2πrw: Lobatto integrates r exactly), and other materials and loads give the same
+/// law (the pressure does not depend on them).
+#[test]
+fn the_steady_torque_is_the_uniform_wear_torque() {
+    for (force, materials) in [
+        (2000.0, [(1.1e5, 0.34), (2.1e5, 0.3)]),
+        (500.0, [(3.0e3, 0.4), (7.0e4, 0.33)]),
+    ] {
+        let washer = Washer {
+            force,
+            materials,
+            ..Default::default()
+        };
+        let run = wearfem::driver::wear(&washer.problem(TURNING), None, |_| {}).unwrap();
+        let torque = run.history.steps.last().unwrap().torque.unwrap();
+        let expected = 0.3 * force * (20.0 + 10.0) / 2.0;
+        // 1 %: the issue's bound; the run is at the steady state to 1e-10 here.
+        assert!(
+            (torque - expected).abs() < 0.01 * expected,
+            "F = {force}: torque {torque} N·mm, μF(r_o + r_i)/2 = {expected}"
+        );
+        let (r, steady_pressure) = steady(&washer, TURNING);
+        let last = &run.history.p_plus;
+        let peak = steady_pressure.iter().cloned().fold(0.0, f64::max);
+        for i in 0..r.len() {
+            // The run reaches the steady state: 300 steps, 2100 step units, where the
+            // transient decays within some 50 (0.1 % of the peak: far inside).
+            assert!(
+                (last[i] - steady_pressure[i]).abs() < 1e-3 * peak,
+                "r = {}: run {} steady {}",
+                r[i],
+                last[i],
+                steady_pressure[i]
+            );
+        }
+    }
+}
+
+/// The run reaches the steady state for the other exponents too.
+#[test]
+fn the_run_reaches_the_steady_state_for_other_laws() {
+    for law in [
+        "{ beta = 1.0e-8, a = 1.0, b = 2.0 }",
+        "{ beta = 5.0e-11, a = 2.0, b = 1.0 }",
+    ] {
+        let washer = Washer {
+            law,
+            ..Default::default()
+        };
+        let problem = washer.problem(TURNING);
+        let run = wearfem::driver::wear(&problem, None, |_| {}).unwrap();
+        let (_, steady_pressure) = steady(&washer, TURNING);
+        let peak = steady_pressure.iter().cloned().fold(0.0, f64::max);
+        let worst = run
+            .history
+            .p_plus
+            .iter()
+            .zip(&steady_pressure)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        // 1 % of the peak: the issue's bound for the run reaching the steady state.
+        assert!(worst < 0.01 * peak, "{law}: {worst} of {peak}");
+    }
+}
+
+/// Archard's law over the surface of revolution, a = b = 1: the washer's worn volume
+/// 2π∫ w r dr equals β̃ ∫∫ p v dA dt, with v = ω r, i.e. β̃ ω ∫ (T/μ) dt from each step's torque
+/// (each step holds its pressure over its k step units of `step_time`).
+#[test]
+fn the_worn_volume_is_archards() {
+    for wear in [
+        TURNING.to_string(),
+        // A turn to and fro: ∫|v| over a half period is 2θ₀ r.
+        "sliding = \"reciprocating\"\nangle = 0.5\nomega = 10.0\nsteps = 120\nextrapolation = [{ until = 40, k = 1 }, { k = 7 }]".to_string(),
+    ] {
+        let washer = Washer {
+            aligned: false,
+            p: 5,
+            ..Default::default()
+        };
+        let problem = washer.problem(&wear);
+        let run = wearfem::driver::wear(&problem, None, |_| {}).unwrap();
+        let (beta, mu) = (1.0e-8, 0.3);
+        let per_unit_torque = if wear.contains("monotonic") {
+            10.0 * 5.0 // ω × step_time: the angle of one step unit, rad
+        } else {
+            2.0 * 0.5 // 2θ₀ per half period, rad
+        };
+        let expected: f64 = run
+            .history
+            .steps
+            .iter()
+            .map(|s| beta * s.k as f64 * per_unit_torque * s.torque.unwrap() / mu)
+            .sum();
+        let worn = &run.history.body_wear[0];
+        let volume =
+            wearfem::wear::worn_volume(&run.contact.points, worn, run.contact.thickness);
+        // 1e-6: the issue's bound; both sides are sums of the same per-step pressures, so
+        // round-off only.
+        assert!(
+            (volume - expected).abs() < 1e-6 * expected,
+            "{wear}: worn volume {volume} mm³, Archard {expected}"
+        );
+    }
+}
+
+/// What a turn refuses, by name.
+#[test]
+fn bad_turns_are_refused_by_name() {
+    let washer = Washer::default();
+    let key_of = |text: String| -> String {
+        let problem = match Problem::from_toml(&text, "bad.toml") {
+            Ok(p) => p,
+            Err(e) => return e.key,
+        };
+        match wearfem::driver::wear(&problem, Some(2), |_| {}) {
+            Ok(_) => "accepted".into(),
+            Err(wearfem::driver::JobError::Problem(e)) => e.key,
+            Err(e) => format!("other: {e}"),
+        }
+    };
+    // A plane speed on a turning contact.
+    let plane_speed =
+        washer.text("sliding = \"monotonic\"\nspeed = 100.0\nstep_time = 5.0\nsteps = 3");
+    assert_eq!(key_of(plane_speed), "wear.angular_speed");
+    // Both speeds.
+    let both = washer.text(&format!("{TURNING}\nspeed = 100.0"));
+    assert_eq!(key_of(both), "wear.speed");
+    // A turn has no sliding distance.
+    let distance = washer
+        .text("sliding = \"monotonic\"\nangular_speed = 10.0\nstep_time = 5.0\ndistance = 10.0");
+    assert_eq!(key_of(distance), "wear.distance");
+    // The angle of a turn to and fro on a turn one way.
+    let angle = washer.text(&format!("{TURNING}\nangle = 0.5"));
+    assert_eq!(key_of(angle), "wear.angle");
+    // A turn's keys on a contact that does not turn.
+    let not_turning = washer.text(TURNING).replace(
+        "sliding_motion = \"about_axis\"",
+        "sliding_motion = \"in_plane\"",
+    );
+    let key = key_of(not_turning);
+    assert!(
+        key == "contact.friction" || key == "contact.sliding_motion",
+        "{key}"
+    );
+    let frictionless = washer
+        .text(TURNING)
+        .replace("sliding_motion = \"about_axis\"", "")
+        .replace("friction = 0.3", "friction = 0.0");
+    assert_eq!(key_of(frictionless), "contact.sliding_motion");
+    // A plane analysis cannot turn about an axis.
+    let plane = washer.text(TURNING).replace(
+        "kind = \"axisymmetric\"",
+        "kind = \"plane_strain\"\nthickness = 1.0",
+    );
+    assert_eq!(key_of(plane), "contact.sliding_motion");
+    // A misspelt motion.
+    let typo = washer
+        .text(TURNING)
+        .replace("\"about_axis\"", "\"about_the_axis\"");
+    assert_eq!(key_of(typo), "contact.sliding_motion");
+    // The paper's §6 methods are plane.
+    let problem =
+        washer.problem("sliding = \"reciprocating\"\nangle = 0.5\nomega = 10.0\nsteps = 3");
+    let e = wearfem::driver::steady_by(
+        &problem,
+        wearfem::paper_steady::SteadyMethod::Spline,
+        Default::default(),
+    )
+    .map(|_| ())
+    .unwrap_err();
+    assert!(e.to_string().contains("analysis.kind"), "{e}");
+}
