@@ -274,6 +274,7 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     axisymmetric_cases::sphere(&mut checks)?;
     axisymmetric_cases::ball(&mut checks)?;
     axisymmetric_cases::punch(&mut checks)?;
+    axisymmetric_cases::washer(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks
             .iter_mut()

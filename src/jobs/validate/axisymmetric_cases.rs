@@ -1,6 +1,7 @@
 //! The validation cases of axisymmetric bodies (issue 31): Lamé's thick tube with free ends
-//! and a hollow sphere under internal pressure, both in the (r, z) half-plane. The bounds are
-//! tests/axisymmetric.rs's.
+//! and a hollow sphere under internal pressure, Hertz's ball, Sneddon's punch, and the thrust
+//! washer turning about its axis (uniform wear, torque, Archard). The bounds are those of
+//! tests/axisymmetric.rs, tests/axisymmetric_contact.rs and tests/axisymmetric_wear.rs.
 
 use super::cases::{fail, push, Checks, Outcome};
 use super::Bound;
@@ -195,6 +196,83 @@ pub fn punch(checks: &mut Checks) -> Outcome {
         "Sneddon: P(1 − ν²)/(2aE), half-space",
         approach,
         Bound::Relative(0.01),
+    );
+    Ok(())
+}
+
+/// The built-in `thrust-washer` (r = 10 … 20 mm, F = 2000 N, ω = 10 rad/s, μ = 0.3), turning
+/// about its axis: the steady pressure makes pᵇ rᵃ uniform, with the constant the load sets
+/// (a = b = 1: p r = F/(2π(r_o − r_i)); a = 2, b = 1: p r² = F/(2π ln(r_o/r_i))); the run's
+/// torque tends to μF(r_o + r_i)/2, and its worn volume is Archard's β̃ ∫∫ p ω r dA dt. The
+/// bounds are tests/axisymmetric_wear.rs's.
+pub fn washer(checks: &mut Checks) -> Outcome {
+    let (inner, outer, force, friction) = (10.0f64, 20.0f64, 2000.0, 0.3);
+    let laws = [
+        ("1", "{ beta = 1.0e-8, a = 1.0, b = 1.0 }", 1.0, "N/mm", {
+            force / (std::f64::consts::TAU * (outer - inner))
+        }),
+        ("2", "{ beta = 1.0e-10, a = 2.0, b = 1.0 }", 2.0, "N", {
+            force / (std::f64::consts::TAU * (outer / inner).ln())
+        }),
+    ];
+    for (id, law, a, unit, constant) in laws {
+        let p = super::cases::problem(
+            "thrust-washer",
+            &[("{ beta = 1.0e-8, a = 1.0, b = 1.0 }", law)],
+        )?;
+        let (state, contact, _) = driver::steady(&p).map_err(|e| fail("thrust-washer", e))?;
+        if state.status != crate::steady::SteadyStatus::Solved {
+            return Err(fail("thrust-washer", "the steady state was not found"));
+        }
+        // The point whose p rᵃ lies farthest from the closed form.
+        let worst = (contact.points.x.iter().zip(&state.p_plus))
+            .map(|(x, pressure)| pressure * x[0].powf(a))
+            .max_by(|u, v| (u - constant).abs().total_cmp(&(v - constant).abs()))
+            .unwrap_or(f64::NAN);
+        push(
+            checks,
+            format!("axisymmetric.washer_uniform_wear_a{id}"),
+            format!(
+                "thrust-washer turning, a = {a}, b = 1: the steady p r^{a} farthest from uniform"
+            ),
+            unit,
+            constant,
+            format!("uniform wear: F = ∫ p 2πr dr with p r^{a} constant"),
+            worst,
+            Bound::Relative(1e-8),
+        );
+    }
+    let p = super::cases::problem("thrust-washer", &[])?;
+    let run = super::cases::wear(&p, None)?;
+    let torque = run.history.steps.last().and_then(|s| s.torque);
+    push(
+        checks,
+        "axisymmetric.washer_torque",
+        "thrust-washer, the run's last step: the friction torque about the axis",
+        "N·mm",
+        friction * force * (outer + inner) / 2.0,
+        "uniform wear: μF(r_o + r_i)/2",
+        torque.unwrap_or(f64::NAN),
+        Bound::Relative(0.01),
+    );
+    // Each step holds its pressure over k step units of 5 s at 10 rad/s.
+    let archard: f64 = (run.history.steps.iter())
+        .map(|s| 1.0e-8 * s.k as f64 * 50.0 * s.torque.unwrap_or(f64::NAN) / friction)
+        .sum();
+    let worn = crate::wear::worn_volume(
+        &run.contact.points,
+        &run.history.body_wear[0],
+        run.contact.thickness,
+    );
+    push(
+        checks,
+        "axisymmetric.washer_archard",
+        "thrust-washer: the washer's worn volume 2π∫ w r dr",
+        "mm³",
+        archard,
+        "Archard: β̃ ∫∫ p ω r dA dt",
+        worn,
+        Bound::Relative(1e-6),
     );
     Ok(())
 }
