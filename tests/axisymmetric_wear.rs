@@ -378,3 +378,41 @@ fn bad_turns_are_refused_by_name() {
     .unwrap_err();
     assert!(e.to_string().contains("analysis.kind"), "{e}");
 }
+
+/// A punch turning on a block, its contact reaching the axis (`rotating-punch`): the steady
+/// pressure is P/(2πa r) off the axis, where the disc the axis point stands for carries
+/// its share of the load, and the torque μPa/2; both jobs warn `turn-on-axis`.
+#[test]
+fn a_punch_turning_to_its_axis_wears_uniformly_off_the_axis() {
+    let problem = Problem::from_toml(
+        wearfem::examples::example("rotating-punch").unwrap(),
+        "rotating-punch",
+    )
+    .unwrap();
+    let (state, contact, _) = wearfem::driver::steady(&problem).unwrap();
+    let (force, radius, friction) = (100.0, 1.0, 0.3);
+    let uniform = force / (2.0 * PI * radius);
+    for (x, p) in contact.points.x.iter().zip(&state.p_plus).skip(1) {
+        // 0.5 %: the axis point's disc (ρ = 7 µm) carries 0.17 % of the load, which the
+        // rest lacks; the closed form has it carried by p r at r < ρ.
+        assert!(
+            (p * x[0] - uniform).abs() < 5e-3 * uniform,
+            "r = {}: p r = {} against {uniform}",
+            x[0],
+            p * x[0]
+        );
+    }
+    let turn = wearfem::wear::AxisRotation::new(&contact, friction);
+    let torque = turn.torque(&state.p_plus, &contact.areas());
+    let expected = friction * force * radius / 2.0;
+    // 1 %: the bound.
+    assert!(
+        (torque - expected).abs() < 0.01 * expected,
+        "{torque} against {expected}"
+    );
+    let warnings = wearfem::driver::steady_warnings(&problem, &contact, &state);
+    assert!(
+        warnings.iter().any(|w| w.contains("turn-on-axis")),
+        "{warnings:?}"
+    );
+}

@@ -60,6 +60,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         "thrust-washer",
         include_str!("../../examples/thrust-washer.toml"),
     ),
+    (
+        "rotating-punch",
+        include_str!("../../examples/rotating-punch.toml"),
+    ),
 ];
 
 /// The text of built-in example `name`.
