@@ -198,7 +198,8 @@ class RunResult(_Result):
     ``history``: a dict of arrays, one entry per step, ready for ``pandas.DataFrame``: step,
     half_period, direction ("+"/"−"), k, iterations, solves (contact solves of the step),
     criterion (%), dissipation (N·mm),
-    delta_w (mm, reciprocating only) and ``p_<probe>`` (MPa). Final profiles (None when the
+    delta_w (mm, reciprocating only), torque (N·mm, bodies of revolution turning about their
+    axis only: ∫ μ p r dA) and ``p_<probe>`` (MPa). Final profiles (None when the
     run did not complete a cycle): ``x`` (mm), ``p_plus``, ``p_minus``, ``p_sum`` (MPa),
     ``shape`` (mm, the gap's profile: initial gap plus wear), ``wear`` (mm, the wear
     alone, positive where material was removed) and ``wear_body1``, ``wear_body2`` (mm, the
@@ -213,7 +214,9 @@ class RunResult(_Result):
     ``failed_solves``, ``unconverged_steps``, ``oscillating_steps`` (``converged`` is False
     when any of these three is non-zero or the run stopped early for another reason than the
     steady state; the profiles and steps are then only those of the completed steps),
-    ``sliding_distance_m`` (m), ``worn_depth`` ([body 1, body 2]: the largest depth worn off
+    ``sliding_distance_m`` (m; None for a turn about the axis), ``turn`` (a dict, bodies of
+    revolution turning about their axis only: ``angle_rad``, ``revolutions``, ``torque_Nmm``,
+    ``power_W``), ``worn_depth`` ([body 1, body 2]: the largest depth worn off
     each body at a contact point, mm), ``worn_volume`` ([body 1, body 2], mm³),
     ``setup_seconds``, ``run_seconds`` (s).
     """
@@ -226,7 +229,7 @@ class RunResult(_Result):
             if not steps or name in steps[0]:
                 history[name] = np.array([s[name] for s in steps], dtype=int)
         history["direction"] = np.array([s["direction"] for s in steps], dtype=str)
-        for name in ["criterion", "dissipation", "delta_w"]:
+        for name in ["criterion", "dissipation", "delta_w", "torque"]:
             if steps and name in steps[0]:
                 history[name] = _array([s[name] for s in steps])
         for probe in steps[0]["probes"] if steps else []:
@@ -252,6 +255,9 @@ class RunResult(_Result):
         self.steady_reached: Optional[bool] = summary.get("steady_reached")
         self.steady_distance: Optional[Dict[str, Optional[float]]] = summary.get("steady_distance")
         self.sliding_distance_m: Optional[float] = summary["sliding_distance_m"]
+        # Bodies of revolution turning about their axis: angle, revolutions, torque (N·mm),
+        # power (W); None otherwise (docs/problem-files.md, summary.json's `turn`).
+        self.turn: Optional[Dict[str, object]] = summary.get("turn")
         self.setup_seconds: float = summary["setup_seconds"]
         self.run_seconds: float = summary["run_seconds"]
         problems = []

@@ -369,6 +369,9 @@ impl WearRun {
                         // δw compares the two half cycles of a period: none in one direction.
                         step.as_object_mut().map(|o| o.remove("delta_w"));
                     }
+                    if let Some(torque) = s.torque {
+                        step["torque"] = number(torque);
+                    }
                     if let Some(max) = s.max_temperature {
                         let temperatures: serde_json::Map<String, Value> = self.probes.iter().zip(&s.temperatures).map(|((n, _), v)| (n.clone(), number(*v))).collect();
                         step["temperatures"] = Value::Object(temperatures);
