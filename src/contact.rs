@@ -566,6 +566,10 @@ impl CondensedContact {
         };
         let (traces2, surface_misfits) =
             body2_traces(problem, c, body1, &chain, body2, &edge2, &mut points)?;
+        if problem.analysis.is_axisymmetric() && c.friction != 0.0 && c.sliding_motion == "in_plane"
+        {
+            spec::along_axis_friction(problem, &points.tangent, "contact.friction", "friction")?;
+        }
         let axis_points = if problem.analysis.is_axisymmetric() {
             let size = body1
                 .mesh
@@ -820,6 +824,16 @@ impl CondensedContact {
             (&self.points.x, &self.points.initial_gap),
             modulus,
         )
+    }
+
+    /// Whether every contact point's tangent runs along the axis (z), as on a pin or a ring
+    /// in a bore: the one contact edge of bodies of revolution along which they can slide in
+    /// the (r, z) plane.
+    pub fn edge_along_axis(&self) -> bool {
+        self.points
+            .tangent
+            .iter()
+            .all(|t| t[0].abs() <= crate::material::AXIS_TOLERANCE)
     }
 
     /// The figures' label of the contact points' coordinate: "r (mm)" on bodies of

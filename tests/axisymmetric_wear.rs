@@ -416,3 +416,150 @@ fn a_punch_turning_to_its_axis_wears_uniformly_off_the_axis() {
         "{warnings:?}"
     );
 }
+
+/// A bronze ring (bore 10 mm, outside 15 mm, free ends: half of it, held in z on its
+/// mid-plane) shrunk on a steel shaft with a radial overlap δ and reciprocating along the axis
+/// (a seal or a bushing): the contact edge runs along the axis, and friction acts along it.
+fn ring_on_shaft(friction: f64, law: &str, steps: usize, k: usize) -> String {
+    let record: Vec<String> = (1..=steps).map(|s| s.to_string()).collect();
+    let record = record.join(", ");
+    format!(
+        r#"title = "a ring on a shaft"
+[analysis]
+kind = "axisymmetric"
+p = 6
+[materials.steel]
+young = 2.0e5
+poisson = 0.3
+[materials.bronze]
+young = 1.1e5
+poisson = 0.34
+[[bodies]]
+name = "ring"
+[[bodies.blocks]]
+corners = [[9.9999, 0.0], [15.0, 0.0], [15.0, 5.0], [9.9999, 5.0]]
+u = 3
+v = 4
+material = "bronze"
+names = {{ bottom = "mid", left = "bore" }}
+[[bodies.supports]]
+edge = "mid"
+fix = ["z"]
+[[bodies]]
+name = "shaft"
+[[bodies.blocks]]
+corners = [[0.0, 0.0], [10.0, 0.0], [10.0, 5.0], [0.0, 5.0]]
+u = 3
+v = 4
+material = "steel"
+names = {{ bottom = "mid", right = "surface" }}
+[[bodies.supports]]
+edge = "mid"
+fix = ["z"]
+[contact]
+body = "ring"
+edge = "bore"
+target_body = "shaft"
+target_edge = "surface"
+friction = {friction}
+[wear]
+body1 = {law}
+sliding = "reciprocating"
+amplitude = 0.5
+omega = 10.0
+steps = {steps}
+extrapolation = [{{ k = {k} }}]
+record = [{record}]
+[probes]
+middle = {{ body = "ring", at = [9.9999, 2.5] }}
+"#
+    )
+}
+
+/// Sliding along the axis, frictionless: the shrink fit's pressure is Lamé's (a tube with free
+/// ends on a solid cylinder with free ends, both exact 3D solutions under a uniform radial
+/// pressure), p₀ = δ/(c_ring + c_shaft), and the ring's wear relieves the overlap:
+/// dw/ds = β̃ p = β̃ p₀ (1 − w/δ), so p = p₀ exp(−β̃ s p₀/δ) over the sliding distance s.
+#[test]
+fn a_shrink_fit_sliding_along_its_axis_wears_loose_exponentially() {
+    let text = ring_on_shaft(0.0, "{ beta = 1.0e-7, a = 1.0, b = 1.0 }", 400, 10);
+    let problem = Problem::from_toml(&text, "ring.toml").unwrap();
+    let run = wearfem::driver::wear(&problem, None, |_| {}).unwrap();
+    let (a, b, overlap) = (9.9999f64, 15.0f64, 1.0e-4);
+    let (e1, n1, e2, n2) = (1.1e5, 0.34, 2.0e5, 0.3);
+    // u_r at the bore of the ring per MPa inside, and of the shaft's surface per MPa outside.
+    let ring =
+        a / e1 * ((1.0 - n1) * a * a / (b * b - a * a) + (1.0 + n1) * b * b / (b * b - a * a));
+    let shaft = (1.0 - n2) * 10.0 / e2;
+    let p0 = overlap / (ring + shaft);
+    let first = run.contact.points.x.len();
+    let (solution, _) = wearfem::complementarity::ContactSolver::new(
+        &run.contact,
+        wearfem::complementarity::Method::ActiveSet,
+    )
+    .solve(
+        &run.contact.points.initial_gap,
+        wearfem::complementarity::Direction::Plus,
+    );
+    for p in &solution.pressure[..first] {
+        // 1e-4: the linear theory's geometry (the overlap taken at r = 10 mm on a bore of
+        // 9.9999 mm) is good to 1e-5; the discretisation of uniform fields is exact.
+        assert!((p - p0).abs() < 1e-4 * p0, "p = {p}, Lamé {p0}");
+    }
+    let rate = 1.0e-7 * p0 / overlap; // per mm of sliding
+    for step in &run.history.steps {
+        let s = step.half_period as f64 * 2.0 * 0.5;
+        let expected = p0 * (-rate * s).exp();
+        // Each cycle of k = 10 is a backward-Euler step of 2k half periods in the sliding
+        // (both halves see the cycle's end shape): h = 20 · β̃ p₀/δ · 1 mm = 6.6e-3, whose
+        // error grows as n h²/2 · p, at most 0.44 % by s = 4000 mm (βs p₀/δ = 1.3), and half a
+        // cycle's lag on a '+' step; 1 % holds both.
+        assert!(
+            (step.probes[0] - expected).abs() < 0.01 * expected,
+            "s = {s} mm: p = {}, exp decay {expected}",
+            step.probes[0]
+        );
+    }
+}
+
+/// Sliding along the axis with friction: Archard's volume over the surface of revolution
+/// (2π∫ w r dz = β̃ ∫∫ p |v| dA dt, a = b = 1), and friction across a face is refused.
+#[test]
+fn a_ring_sliding_along_its_axis_with_friction_wears_by_archard() {
+    let text = ring_on_shaft(0.3, "{ beta = 1.0e-7, a = 1.0, b = 1.0 }", 60, 3);
+    let problem = Problem::from_toml(&text, "ring.toml").unwrap();
+    let run = wearfem::driver::wear(&problem, None, |_| {}).unwrap();
+    assert_eq!(run.history.failed_solves, 0);
+    let area = run.contact.areas();
+    // Every step is recorded (below), so each step's pressure is known: it is held over the
+    // step's k half periods of 2u₀ = 1 mm of sliding each.
+    let archard: f64 = (run.history.snapshots.iter())
+        .map(|snapshot| {
+            let force: f64 = snapshot
+                .pressure
+                .iter()
+                .zip(&area)
+                .map(|(p, a)| p * a)
+                .sum();
+            1.0e-7 * 3.0 * 1.0 * force
+        })
+        .sum();
+    assert_eq!(run.history.snapshots.len(), 60);
+    let worn = &run.history.body_wear[0];
+    let volume = wearfem::wear::worn_volume(&run.contact.points, worn, run.contact.thickness);
+    // 1e-6: the issue's bound; both are sums of the same pressures (round-off).
+    assert!(
+        (volume - archard).abs() < 1e-6 * archard,
+        "worn volume {volume} mm³, Archard {archard}"
+    );
+    // A face with friction in the (r, z) plane is refused: the slip would be radial.
+    let face = Washer::default().text(TURNING).replace(
+        "sliding_motion = \"about_axis\"",
+        "sliding_motion = \"in_plane\"",
+    );
+    let problem = Problem::from_toml(&face, "face.toml").unwrap();
+    let e = wearfem::contact::CondensedContact::build(&problem)
+        .map(|_| ())
+        .unwrap_err();
+    assert_eq!(e.key, "contact.friction", "{e}");
+}

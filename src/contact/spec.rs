@@ -334,6 +334,32 @@ pub(super) fn unknown_motion(problem: &Problem, other: &str) -> ProblemError {
     )
 }
 
+/// Bodies of revolution sliding in the (r, z) plane (`contact.sliding_motion = "in_plane"`)
+/// slide along the contact edge's tangent, which must then run along the axis (a pin or a
+/// ring in a bore): along a face (a radial tangent) the slip would be outwards or inwards all
+/// round, which no motion makes (a review: a ball on an aluminium flat pressed 25 % less or
+/// 34 % more at its centre with μ = 0.5, in silence). `tangents` are the contact points'
+/// unit tangents; `what` names the friction or the wear that needs the sliding, for the
+/// message (key `contact.friction` or `contact.sliding_motion`).
+pub(super) fn along_axis_friction(
+    problem: &Problem,
+    tangents: &[crate::geometry::Point],
+    key: &str,
+    what: &str,
+) -> Result<(), ProblemError> {
+    // The same tolerance as "on the axis": 1e-6 of the direction.
+    if let Some(t) = tangents
+        .iter()
+        .find(|t| t[0].abs() > crate::material::AXIS_TOLERANCE)
+    {
+        return Err(problem.error(
+            key,
+            format!("{what} of bodies of revolution in the (r, z) plane acts along the contact edge, which must then run along the axis (a pin or a ring in a bore, sliding along it); this edge runs across it (a tangent ({:.3}, {:.3})), where the slip would be outwards or inwards all round, which no motion makes. Give 0 friction for a face pressed along the axis, or contact.sliding_motion = \"about_axis\" for bodies turning about their axis", t[0], t[1]),
+        ));
+    }
+    Ok(())
+}
+
 /// The plate's motion is one of the three, and a rotation has a pin within range.
 pub(super) fn check_plate(problem: &Problem, plate: &PlateSpec) -> Result<(), ProblemError> {
     if !matches!(
@@ -354,10 +380,11 @@ pub(super) fn check_plate(problem: &Problem, plate: &PlateSpec) -> Result<(), Pr
 }
 
 /// What contact between bodies of revolution supports so far (issue 31, built in steps): the
-/// contact solve with the plate translating along the axis, frictionless or turning about the
-/// axis (`contact.sliding_motion = "about_axis"`, whose friction is circumferential), and the
-/// wear of such a turn. A plate that turns is not axisymmetric; sliding along the axis, heat
-/// and sliding pairs of bodies of revolution are not built yet.
+/// contact solve with the plate translating along the axis or held, frictionless, turning
+/// about the axis (`contact.sliding_motion = "about_axis"`, whose friction is
+/// circumferential) or sliding along it on a contact edge along the axis
+/// ([`along_axis_friction`]), and the wear of both. A plate that turns is not axisymmetric;
+/// heat and sliding pairs of bodies of revolution are not built yet.
 fn check_axisymmetric(problem: &Problem, c: &ContactSpec) -> Result<(), ProblemError> {
     if let Some(plate) = &problem.spec.plate {
         if plate.motion != "vertical" && plate.motion != "fixed" {
@@ -371,16 +398,6 @@ fn check_axisymmetric(problem: &Problem, c: &ContactSpec) -> Result<(), ProblemE
         return Err(problem.error(
             "contact.pairs",
             "sliding pairs of bodies of revolution are not built yet",
-        ));
-    }
-    if c.friction != 0.0 && c.sliding_motion != "about_axis" {
-        // In the (r, z) plane friction along a face's radial tangent would be a slip outwards
-        // (or inwards) all round, which no motion of the plate makes (a review: a ball on an
-        // aluminium flat pressed 25 % less or 34 % more at its centre with μ = 0.5, in
-        // silence).
-        return Err(problem.error(
-            "contact.friction",
-            format!("{}: friction between bodies of revolution sliding along the axis is not built yet; give 0, or set contact.sliding_motion = \"about_axis\" for bodies turning about their axis (the friction is then circumferential, out of the (r, z) plane, and sets the torque)", c.friction),
         ));
     }
     if problem.spec.heat.is_some() {

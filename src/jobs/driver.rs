@@ -121,32 +121,22 @@ fn axisymmetric_json() -> Value {
     })
 }
 
-/// Refuse a wear job (`what`) on bodies of revolution unless they turn about their axis
-/// (`contact.sliding_motion = "about_axis"`), naming the key: their sliding along the axis is
-/// not built yet, and a plane wear rule would be a wrong answer for them.
-pub fn require_plane_wear(problem: &Problem, what: &str) -> Result<(), ProblemError> {
-    let about_axis = problem
-        .spec
-        .contact
-        .as_ref()
-        .is_some_and(|c| c.sliding_motion == "about_axis");
-    if problem.analysis.is_axisymmetric() && !about_axis {
-        return Err(problem.error(
-            "contact.sliding_motion",
-            format!("is \"in_plane\" on bodies of revolution, and {what} of bodies of revolution sliding along their axis is not built yet; bodies turning about their axis (a thrust washer, a clutch) give \"about_axis\""),
-        ));
-    }
-    Ok(())
-}
-
 /// Make `integrator`'s sliding the turn about the axis of `contact`'s bodies of revolution
 /// when the contact says they turn (`contact.sliding_motion = "about_axis"`); the wear keys of
-/// a turn (`angle`, `angular_speed`) without it are refused by name.
+/// a turn (`angle`, `angular_speed`) without it are refused by name. Bodies of revolution that
+/// do not turn slide in the (r, z) plane, along the contact edge, which must then run along
+/// the axis (a pin or a ring in a bore; along a face the slide would be radial, all round).
 pub fn attach_turn(
     problem: &Problem,
     integrator: &mut WearIntegrator,
     contact: &CondensedContact,
 ) -> Result<(), ProblemError> {
+    if contact.axisymmetric && contact.friction_about_axis.is_none() && !contact.edge_along_axis() {
+        return Err(problem.error(
+            "contact.sliding_motion",
+            "is \"in_plane\" on bodies of revolution, whose sliding in the (r, z) plane runs along the contact edge, and this edge runs across the axis (a face): a radial slide all round is no motion. Bodies turning about their axis (a thrust washer, a clutch) give \"about_axis\"; bodies sliding along it need a contact edge along the axis (a pin or a ring in a bore)",
+        ));
+    }
     match contact.friction_about_axis {
         Some(friction) => integrator
             .turn_about_axis(crate::wear::AxisRotation::new(contact, friction))
@@ -444,7 +434,6 @@ pub fn steady_with_heat(
     JobError,
 > {
     super::sliding::require_fixed_pairs(problem, "the steady state")?;
-    require_plane_wear(problem, "the steady state")?;
     let spec = problem
         .spec
         .wear
@@ -510,7 +499,6 @@ pub fn steady_by(
     settings: crate::paper_steady::MethodSettings,
 ) -> Result<(crate::paper_steady::MethodOutcome, CondensedContact, f64), JobError> {
     super::sliding::require_fixed_pairs(problem, "the steady state")?;
-    require_plane_wear(problem, "the steady state")?;
     if problem.analysis.is_axisymmetric() && method != crate::paper_steady::SteadyMethod::Exact {
         // Their splines and averages are laid out along a plane edge with one sliding
         // distance; the exact method knows each point's own.

@@ -104,7 +104,6 @@ pub fn wear_until(
     on_step: impl FnMut(&crate::wear::StepRecord) -> ControlFlow<()>,
 ) -> Result<WearRun, JobError> {
     super::sliding::require_fixed_pairs(problem, "this run (the fixed pairs' integrator)")?;
-    super::driver::require_plane_wear(problem, "a wear run")?;
     let spec = problem
         .spec
         .wear
