@@ -836,14 +836,33 @@ impl CondensedContact {
             .all(|t| t[0].abs() <= crate::material::AXIS_TOLERANCE)
     }
 
-    /// The figures' label of the contact points' coordinate: "r (mm)" on bodies of
-    /// revolution, "x (mm)" otherwise.
+    /// The figures' label of the contact points' coordinate: "z (mm)" on bodies of
+    /// revolution whose contact edge runs along the axis ([`CondensedContact::profile`]),
+    /// "r (mm)" on other bodies of revolution, "x (mm)" otherwise.
     pub fn position_label(&self) -> &'static str {
-        if self.axisymmetric {
+        if self.axisymmetric && self.edge_along_axis() {
+            "z (mm)"
+        } else if self.axisymmetric {
             "r (mm)"
         } else {
             "x (mm)"
         }
+    }
+
+    /// The coordinate the contact's profiles are drawn against (mm): x (the radius on bodies
+    /// of revolution), or z where the contact edge of bodies of revolution runs along the
+    /// axis (a ring in a bore, where every point has the same r).
+    pub fn profile(&self) -> Vec<f64> {
+        let along_z = self.axisymmetric && self.edge_along_axis();
+        let k = usize::from(along_z);
+        self.points.x.iter().map(|p| p[k]).collect()
+    }
+
+    /// The z of the contact points (mm) where the profiles are drawn against it
+    /// ([`CondensedContact::profile`]); None otherwise, where x is the profiles' coordinate.
+    pub fn profile_z(&self) -> Option<Vec<f64>> {
+        (self.axisymmetric && self.edge_along_axis())
+            .then(|| self.points.x.iter().map(|p| p[1]).collect())
     }
 
     /// Whether there are no contact points.

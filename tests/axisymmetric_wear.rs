@@ -563,3 +563,40 @@ fn a_ring_sliding_along_its_axis_with_friction_wears_by_archard() {
         .unwrap_err();
     assert_eq!(e.key, "contact.friction", "{e}");
 }
+
+/// Review findings: a turn reaching the axis with a ≥ 2b has no steady state (p ∝ r^(−a/b)
+/// carries no finite load): `steady` refuses it by name and the run says none exists; a ring
+/// in a bore writes its profiles against z (every point has the same r).
+#[test]
+fn turn_review_findings_stay_fixed() {
+    let text = wearfem::examples::example("rotating-punch")
+        .unwrap()
+        .replace(
+            "beta = 1.0e-9, a = 1.0, b = 1.0",
+            "beta = 1.0e-12, a = 2.0, b = 1.0",
+        )
+        .replace("steps = 400", "steps = 20")
+        .replace("record = [1, 10, 100, 200, 400]", "record = [1, 10]");
+    let problem = Problem::from_toml(&text, "collapse.toml").unwrap();
+    let e = wearfem::driver::steady(&problem).map(|_| ()).unwrap_err();
+    assert!(e.to_string().contains("wear.body1"), "{e}");
+    let run = wearfem::driver::wear(&problem, None, |_| {}).unwrap();
+    let said = run.steady_check.to_string();
+    assert!(said.contains("no steady state exists"), "{said}");
+    let warnings = run.warnings(&problem);
+    assert!(
+        warnings
+            .iter()
+            .any(|w| w.contains("turn-on-axis") && w.contains("no steady state exists")),
+        "{warnings:?}"
+    );
+    // The ring in a bore: its contact points share one r, and z is the profiles' coordinate.
+    let ring = ring_on_shaft(0.3, "{ beta = 1.0e-7, a = 1.0, b = 1.0 }", 4, 1);
+    let problem = Problem::from_toml(&ring, "ring.toml").unwrap();
+    let run = wearfem::driver::wear(&problem, None, |_| {}).unwrap();
+    let z = run.contact.profile_z().expect("a contact along the axis");
+    assert!(z.windows(2).all(|w| w[1] > w[0]), "{z:?}");
+    assert_eq!(run.contact.position_label(), "z (mm)");
+    let summary = run.summary(&problem);
+    assert_eq!(summary["final"]["z"].as_array().unwrap().len(), z.len());
+}

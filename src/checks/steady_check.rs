@@ -119,6 +119,9 @@ impl SteadyCheck {
     }
 }
 
+/// How [`SteadyCheck::Unavailable`]'s reason begins where no steady state exists at all.
+pub const NONE_EXISTS: &str = "no steady state exists";
+
 /// Compare the last cycle of `history` with the steady state of `contact` under the wear law
 /// and sliding of `integrator`.
 pub fn check(
@@ -128,6 +131,21 @@ pub fn check(
 ) -> SteadyCheck {
     if history.steady_distance.is_none() {
         return SteadyCheck::NoCycle;
+    }
+    if contact.axisymmetric && contact.rigid_modes.is_empty() {
+        // (The plane message names "vertical_rotation", which a body of revolution's plate
+        // cannot have.)
+        return SteadyCheck::Unavailable(format!(
+            "{NONE_EXISTS} while the plate is held: the wear only relieves the contact (a body of revolution's plate can move along the axis only, plate.motion = \"vertical\")"
+        ));
+    }
+    let collapsing = (0..2).any(|body| integrator.law_of(body).is_some_and(|l| l.a >= 2.0 * l.b));
+    if integrator.about_axis().is_some() && !contact.axis_points.is_empty() && collapsing {
+        // A turn whose steady pressure p ∝ r^(−a/b) cannot carry a load reaching the axis:
+        // no steady state exists, and a solve would give a mesh's answer.
+        return SteadyCheck::Unavailable(format!(
+            "{NONE_EXISTS}: the bodies turn about their axis, touch on it, and a ≥ 2b (see the turn-on-axis warning)"
+        ));
     }
     let start = Instant::now();
     let sliding = if integrator.is_monotonic() {

@@ -388,13 +388,25 @@ fn turn_on_axis_warning(
         .iter()
         .any(|p| p.get(axis).is_some_and(|&v| v > 0.0));
     let rho = (contact.points.weight[axis] / std::f64::consts::PI).sqrt();
+    let collapsing = problem.spec.wear.as_ref().and_then(collapsing_law);
     loaded.then(|| {
-        warning(
-            "turn-on-axis",
-            &problem.file,
-            format!("the bodies turn about their axis and touch on it, where nothing slides: the steady pressure pᵇ(ωr)ᵃ = const is unbounded at r = 0, and the worn contact tends to it. The pressure and wear given at r = 0 are the extrapolation of the neighbouring points' and the wear of the disc r < {rho:.3e} mm about the axis, not point values; the load, the torque and the worn volumes are not affected"),
-        )
+        let text = match collapsing {
+            Some((name, a, b)) => format!("the bodies turn about their axis and touch on it, where nothing slides, and wear.{name} has a = {a} ≥ 2b = {}: the steady pressure p ∝ r^(−a/b) could not carry the load (∫ p r dr diverges at r = 0), so no steady state exists; the worn contact draws its load ever closer to the axis, where the model's answer depends on the mesh (the disc r < {rho:.3e} mm about the axis): the pressures, the torque and the volumes are not converged results", 2.0 * b),
+            None => format!("the bodies turn about their axis and touch on it, where nothing slides: the steady pressure pᵇ(ωr)ᵃ = const is unbounded at r = 0 (integrable, a < 2b), and the worn contact tends to it. The pressure and wear given at r = 0 are the extrapolation of the neighbouring points' and the wear of the disc r < {rho:.3e} mm about the axis, not point values; the load, the torque and the worn volumes are not affected"),
+        };
+        warning("turn-on-axis", &problem.file, text)
     })
+}
+
+/// A wear law of `wear` under which a turn's steady pressure p ∝ r^(−a/b) cannot carry a load
+/// that reaches the axis (a ≥ 2b: ∫ p r dr diverges at r = 0): its name and exponents.
+pub fn collapsing_law(wear: &crate::wear::WearSpec) -> Option<(&'static str, f64, f64)> {
+    [("body1", wear.body1), ("body2", wear.body2)]
+        .into_iter()
+        .find_map(|(name, law)| {
+            law.filter(|l| l.beta > 0.0 && l.a >= 2.0 * l.b)
+                .map(|l| (name, l.a, l.b))
+        })
 }
 
 /// A warning when `plate.motion = "fixed"` and tractions act on the plate edge: the fixed
@@ -453,6 +465,11 @@ pub const INCLINATION_LIMIT_DEGREES: f64 = 1.0;
 /// contact force 15 times the load; exit 0, no word). Right for a plate that is guided
 /// vertically, as the model says, but seldom what a turned model means.
 pub fn inclined_contact_warning(problem: &Problem, contact: &CondensedContact) -> Option<String> {
+    if contact.axisymmetric {
+        // A body of revolution has no sideways motion to follow (a cone is pressed along its
+        // axis all round), and its friction, if any, is circumferential.
+        return None;
+    }
     problem
         .spec
         .plate

@@ -181,6 +181,8 @@ fn check_kinematics(spec: &WearSpec) -> Result<(), KeyError> {
 pub fn resolve_duration(spec: &WearSpec) -> Result<WearSpec, KeyError> {
     use crate::input::duration::{half_periods_of, record_points, steps_through, Units};
     let bad = |k: &str, m: String| Err((format!("wear.{k}"), m));
+    // A turn's own keys first: its distance is no duration at all, not one too many.
+    spec.check_turn()?;
     let given = [
         spec.steps > 0,
         spec.cycles.is_some(),

@@ -321,6 +321,14 @@ pub fn contact(
     if problem.analysis.is_axisymmetric() {
         summary["axisymmetric"] = axisymmetric_json();
     }
+    if let (Some(friction), Status::Solved) = (contact.friction_about_axis, info.status) {
+        // Bodies turning about their axis: the friction torque of this contact.
+        let turn = crate::wear::AxisRotation::new(&contact, friction);
+        summary["turn"] = json!({
+            "friction": number(friction),
+            "torque_Nmm": number(turn.torque(&solution.pressure, &contact.areas())),
+        });
+    }
     // A failed solve is returned too (status in `info`), with its residuals but none of its
     // values in the summary: nothing taken from a failed solve is a result.
     // The console's warning lines, also for Python: the zone diagnostics describe a
@@ -461,8 +469,24 @@ pub fn steady_with_heat(
             crate::steady::SteadyError::NoRigidMotion => "plate.motion",
             crate::steady::SteadyError::NoWear => "wear.body1.beta",
         };
+        if contact.axisymmetric && e == crate::steady::SteadyError::NoRigidMotion {
+            // A body of revolution's plate can only translate along the axis.
+            return problem.error(key, "a steady worn state needs a plate that can move, and a body of revolution's plate moves along the axis only (plate.motion = \"vertical\"); bodies pressed by an overlap (a shrink fit) with the plate held have none: their wear only relieves the fit");
+        }
         problem.error(key, e.to_string())
     };
+    if let (Some(_), false, Some((name, a, b))) = (
+        contact.friction_about_axis,
+        contact.axis_points.is_empty(),
+        crate::checks::warnings::collapsing_law(&spec),
+    ) {
+        return Err(problem
+            .error(
+                format!("wear.{name}"),
+                format!("a = {a} ≥ 2b = {}: the bodies turn about their axis and touch on it, and the steady pressure of a turn, p ∝ r^(−a/b), cannot carry a load that reaches the axis (∫ p r dr diverges at r = 0): no steady state exists (the worn contact draws its load ever closer to the axis). `wearfem run` integrates the transient, with a warning", 2.0 * b),
+            )
+            .into());
+    }
     let terms = integrator.wear_terms();
     let (state, heat) = match super::heat::thermal_model(problem, &contact, [&body1, &body2])? {
         None => (

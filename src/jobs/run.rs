@@ -417,6 +417,10 @@ impl WearRun {
             "run_seconds": self.run_seconds,
             "sliding_distance_m": number(half_periods as f64 * self.sliding_per_half_period / 1000.0),
         });
+        if let (Some(z), Some(f)) = (self.contact.profile_z(), summary["final"].as_object_mut()) {
+            // Bodies of revolution touching along their axis: every point has the same r.
+            f.insert("z".into(), numbers(&z));
+        }
         if let Some((turn, omega)) = &self.turn {
             summary["sliding_distance_m"] = Value::Null;
             summary["turn"] = self.turn_json(turn, *omega, half_periods);

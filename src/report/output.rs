@@ -77,6 +77,10 @@ pub struct Profiles<'a> {
     pub x: &'a [f64],
     /// The figures' label of x ([`crate::contact::CondensedContact::position_label`]).
     pub x_label: &'static str,
+    /// z of the contact points, mm, where the profiles are drawn against it (bodies of
+    /// revolution touching along the axis, [`crate::contact::CondensedContact::profile_z`]):
+    /// a `z_mm` column after `x_mm`, and the figures' abscissa.
+    pub z: Option<&'a [f64]>,
     /// '+' half-cycle pressure, MPa.
     pub p_plus: &'a [f64],
     /// '−' half-cycle pressure, MPa (None for monotonic sliding).
@@ -107,7 +111,11 @@ impl Profiles<'_> {
         let two = self.p_minus.is_some();
         let rows: Vec<Vec<Value>> = (0..self.x.len())
             .map(|i| {
-                let mut row = vec![number(self.x[i]), number(self.p_plus[i])];
+                let mut row = vec![number(self.x[i])];
+                if let Some(z) = self.z {
+                    row.push(number(z[i]));
+                }
+                row.push(number(self.p_plus[i]));
                 if two {
                     row.extend([number(p_minus[i]), number(p_sum[i])]);
                 }
@@ -121,7 +129,11 @@ impl Profiles<'_> {
                 row
             })
             .collect();
-        let mut header = vec!["x_mm", "p_plus_MPa"];
+        let mut header = vec!["x_mm"];
+        if self.z.is_some() {
+            header.push("z_mm");
+        }
+        header.push("p_plus_MPa");
         if two {
             header.extend(["p_minus_MPa", "p_sum_MPa"]);
         }
@@ -133,8 +145,9 @@ impl Profiles<'_> {
             header.extend(["wear_body1_mm", "wear_body2_mm"]);
         }
         write_csv(dir, csv_name, &header, &rows)?;
+        let abscissa = self.z.unwrap_or(self.x);
         let profile = |v: &[f64], scale: f64| {
-            self.x
+            abscissa
                 .iter()
                 .zip(v)
                 .map(|(&a, &b)| (a, b * scale))
@@ -291,10 +304,12 @@ fn write_wear_tables(
     let header_refs: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
     write_csv(dir, "history.csv", &header_refs, &rows)?;
     let x: Vec<f64> = run.contact.points.x.iter().map(|p| p[0]).collect();
+    let along_z = run.contact.profile_z();
     let final_wear = run.wear_of(&h.shape);
     let profiles = Profiles {
         x: &x,
         x_label: run.contact.position_label(),
+        z: along_z.as_deref(),
         p_plus: &h.p_plus,
         p_minus: (!monotonic).then_some(&h.p_minus[..]),
         shape: &h.shape,
@@ -316,37 +331,39 @@ fn write_wear_tables(
             let wear = run.wear_of(&s.shape);
             (0..x.len())
                 .map(|i| {
-                    vec![
+                    let mut row = vec![
                         json!(s.step),
                         json!(s.half_period),
                         json!(s.direction),
                         number(x[i]),
+                    ];
+                    if let Some(z) = &along_z {
+                        row.push(number(z[i]));
+                    }
+                    row.extend([
                         number(s.pressure[i]),
                         number(s.shape[i]),
                         number(wear[i]),
                         number(s.body_wear[0][i]),
                         number(s.body_wear[1][i]),
-                    ]
+                    ]);
+                    row
                 })
                 .collect::<Vec<_>>()
         })
         .collect();
-    write_csv(
-        dir,
-        "snapshots.csv",
-        &[
-            "step",
-            "half_period",
-            "direction",
-            "x_mm",
-            "pressure_MPa",
-            "shape_mm",
-            "wear_mm",
-            "wear_body1_mm",
-            "wear_body2_mm",
-        ],
-        &rows,
-    )?;
+    let mut header = vec!["step", "half_period", "direction", "x_mm"];
+    if along_z.is_some() {
+        header.push("z_mm");
+    }
+    header.extend([
+        "pressure_MPa",
+        "shape_mm",
+        "wear_mm",
+        "wear_body1_mm",
+        "wear_body2_mm",
+    ]);
+    write_csv(dir, "snapshots.csv", &header, &rows)?;
     let series: Vec<Series> = run
         .probes
         .iter()
@@ -411,6 +428,10 @@ pub fn steady_summary(
         "seconds": seconds,
     });
     let mut summary = summary;
+    if let Some(z) = contact.profile_z() {
+        // Bodies of revolution touching along their axis: every point has the same r.
+        summary["z"] = numbers(&z);
+    }
     if let Some(friction) = contact.friction_about_axis {
         // Bodies of revolution turning about their axis: the steady friction torque (the same
         // in both halves of a turn to and fro, whose friction leaves the (r, z) problem).
@@ -457,6 +478,7 @@ pub fn write_steady_summary(
     Profiles {
         x: &x,
         x_label: contact.position_label(),
+        z: contact.profile_z().as_deref(),
         p_plus: &state.p_plus,
         p_minus,
         shape: &state.shape,

@@ -283,7 +283,8 @@ where
 /// (`delta_w`), each as SVG and PNG in `dir`. `name` names the problem in the titles.
 pub fn wear_figures(dir: &Path, name: &str, run: &crate::driver::WearRun) -> Result<(), String> {
     let h = &run.history;
-    let x: Vec<f64> = run.contact.points.x.iter().map(|p| p[0]).collect();
+    // Along z where bodies of revolution touch along their axis (every point at one r).
+    let x = run.contact.profile();
     let labels: Vec<String> = h
         .snapshots
         .iter()

@@ -74,6 +74,12 @@ impl WearRun {
             SteadyCheck::SeparateZones { .. } => {
                 "NOT a steady state of one rigid wear per period, and none exists to reach (run longer only to see whether the pressures still change)"
             }
+            SteadyCheck::Unavailable(_) if self.contact.rigid_modes.is_empty() => {
+                "no steady state with wear exists while the plate is held: the wear only relieves the contact, towards no pressure"
+            }
+            SteadyCheck::Unavailable(why) if why.starts_with(crate::checks::steady_check::NONE_EXISTS) => {
+                "no steady state exists to reach"
+            }
             // `wearfem steady` cannot help where there is none to compare with.
             SteadyCheck::Unavailable(_) => {
                 "NOT at a steady state by its last cycle's own wear: run longer to see whether it settles"
