@@ -150,60 +150,6 @@ pub fn check_schedule(schedule: &[ScheduleEntry]) -> Result<(), String> {
     Ok(())
 }
 
-impl WearSpec {
-    /// Whether the bodies turn about their axis (`angular_speed` or `angle` given).
-    pub fn turns_about_axis(&self) -> bool {
-        self.angular_speed.is_some() || self.angle.is_some()
-    }
-
-    /// The sliding's amplitude and speed as the kinematics use them: u₀ (mm) and v (mm/s),
-    /// or for a turn about the axis θ₀ (rad) and ω (rad/s), the sliding of a point at 1 mm.
-    pub fn sliding_scale(&self) -> (f64, f64) {
-        if self.turns_about_axis() {
-            (self.angle.unwrap_or(0.0), self.angular_speed.unwrap_or(0.0))
-        } else {
-            (self.amplitude, self.speed)
-        }
-    }
-
-    /// A turn's keys against the plane sliding's: `angle` (rad) replaces `amplitude`,
-    /// `angular_speed` (rad/s) replaces `speed`, each belongs to its own kind of sliding, and a
-    /// turn has no sliding distance (it is ω r: it depends on the radius). The error names the
-    /// key.
-    pub fn check_turn(&self) -> Result<(), (String, String)> {
-        let bad = |k: &str, m: &str| Err((format!("wear.{k}"), m.to_string()));
-        if !self.turns_about_axis() {
-            return Ok(());
-        }
-        let monotonic = self.sliding == "monotonic";
-        if self.angle.is_some() && monotonic {
-            return bad("angle", "is the amplitude of a turn to and fro (sliding = \"reciprocating\"); a turn one way gives angular_speed (rad/s)");
-        }
-        if self.angular_speed.is_some() && !monotonic {
-            return bad("angular_speed", "is the speed of a turn one way (sliding = \"monotonic\"); a turn to and fro gives angle (rad) and omega (rad/s)");
-        }
-        if self.amplitude != 0.0 {
-            return bad(
-                "amplitude",
-                "a turn about the axis gives its amplitude as angle (rad); remove amplitude",
-            );
-        }
-        if self.speed != 0.0 {
-            return bad(
-                "speed",
-                "a turn about the axis gives its speed as angular_speed (rad/s); remove speed",
-            );
-        }
-        if self.distance.is_some() {
-            return bad("distance", "a turn's sliding distance depends on the radius (ω r): give its duration as steps, cycles or time (s)");
-        }
-        if !self.record_distance.is_empty() {
-            return bad("record_distance", "a turn's sliding distance depends on the radius (ω r): record by record_time (s), record_cycles or record (steps)");
-        }
-        Ok(())
-    }
-}
-
 fn implicit() -> String {
     "implicit".into()
 }
