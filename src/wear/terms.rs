@@ -28,7 +28,7 @@ impl WearTerms {
         }
     }
 
-    /// Terms `terms` scaled point by point: law l at point i is (c_l · factor[l][i], b_l).
+    /// Terms `terms` scaled point by point: law l at point i is (c_l · `factor[l][i]`, b_l).
     /// `factor` has one row per law, each as long as the contact has points.
     pub fn scaled_per_point(terms: &[(f64, f64)], factor: &[Vec<f64>]) -> WearTerms {
         let points = factor.first().map_or(0, Vec::len);
