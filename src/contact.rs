@@ -731,6 +731,31 @@ impl CondensedContact {
             .collect()
     }
 
+    /// A_tt (mm/N, row-major N × N): τ_iᵀ G τ_j of both bodies, the relative tangential
+    /// displacement of body 1 against body 2 along τ_i per unit force pair along τ_j (+τ_j on
+    /// body 1, −τ_j on body 2); `body1`, `body2` the factorised bodies [`CondensedContact::build`]
+    /// returns. Only the stick problem needs it ([`crate::partial_slip`]): made on demand.
+    /// The fixed pairs' frame (body 2's traces face the points' own tangents).
+    pub fn tangential_flexibility(
+        &self,
+        problem: &Problem,
+        body1: &ElasticBody,
+        body2: &ElasticBody,
+    ) -> Result<Vec<f64>, ProblemError> {
+        let n = self.len();
+        let mut a_tt = vec![0.0; n * n];
+        for (body, traces) in [(body1, &self.traces[0]), (body2, &self.traces[1])] {
+            flexibility::add_tangential_flexibility(
+                problem,
+                body,
+                traces,
+                &self.points.tangent,
+                &mut a_tt,
+            )?;
+        }
+        Ok(a_tt)
+    }
+
     /// A_s = A_nn − s μ A_nt (mm/N, row-major N × N): gap change per unit contact force in
     /// half-cycle sign s.
     pub fn gap_matrix(&self, s: f64) -> Vec<f64> {

@@ -7,4 +7,5 @@ pub mod capacitance;
 pub mod complementarity;
 pub mod dense;
 pub mod lemke;
+pub mod partial_slip;
 pub mod updated_lu;

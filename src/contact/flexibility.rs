@@ -148,3 +148,28 @@ impl DofFlexibility {
         true
     }
 }
+
+/// One body's tangential flexibility at the contact points, added to A_tt (row-major N × N):
+/// τ_iᵀ G_ij τ_j with G = C K⁻¹ Cᵀ ([`ElasticBody::row_flexibility`]), `tangents` being the
+/// body's own frame at its traces. Only the stick problem needs it (full slip and the normal
+/// problem do not), so it is made on demand, not with the contact.
+pub(super) fn add_tangential_flexibility(
+    problem: &Problem,
+    body: &ElasticBody,
+    traces: &[Trace],
+    tangents: &[Point],
+    a_tt: &mut [f64],
+) -> Result<(), ProblemError> {
+    let rows = projected(traces, tangents);
+    let product = body
+        .row_flexibility(&rows, &rows)
+        .map_err(|e| problem.error("contact", e.to_string()))?;
+    let n = tangents.len();
+    for i in 0..n {
+        let column = product.col(i);
+        for j in 0..n {
+            a_tt[i * n + j] += column[j];
+        }
+    }
+    Ok(())
+}
