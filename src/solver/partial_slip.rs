@@ -84,9 +84,29 @@ pub struct TangentialProblem<'a> {
 const MAX_ITERATIONS: usize = 500;
 
 impl TangentialProblem<'_> {
-    /// Solve for the tangential load `load` (N along +x on body 1's plate).
+    /// Solve for the tangential load `load` (N along +x on body 1's plate), loaded from the
+    /// normally loaded state without tangential force.
     pub fn solve(&self, load: f64) -> Result<PartialSlip, PartialSlipError> {
+        self.solve_from(load, None)
+    }
+
+    /// Solve for the tangential load `load` (N), reached from the state `from` by a monotonic
+    /// change of the load (None: from no tangential force). The stick condition holds for the
+    /// change: a point sticks when it does not slip in this stage, whatever it slipped before
+    /// (Mindlin and Deresiewicz's unloading, a fretting cycle's half: the history matters);
+    /// `slip` of the result is this stage's slip.
+    pub fn solve_from(
+        &self,
+        load: f64,
+        from: Option<&PartialSlip>,
+    ) -> Result<PartialSlip, PartialSlipError> {
         let n = self.normal_force.len();
+        // The relative tangential displacement the previous state had: a stage's slip is
+        // measured from it.
+        let base = match from {
+            Some(state) => self.displacement(&state.force, state.shift),
+            None => vec![0.0; n],
+        };
         let loaded: Vec<usize> = (0..n).filter(|&i| self.normal_force[i] > 0.0).collect();
         let limit: f64 = loaded
             .iter()
@@ -115,11 +135,14 @@ impl TangentialProblem<'_> {
                 .copied()
                 .filter(|&i| direction[i] == 0)
                 .collect();
-            self.solve_stick(&stick, load, &mut force, &mut shift, &mut lu)
+            self.solve_stick(&stick, (load, &base), &mut force, &mut shift, &mut lu)
                 .ok_or(PartialSlipError::NotSettled {
                     iterations: iteration,
                 })?;
-            let slip = self.slip(&force, shift);
+            let slip: Vec<f64> = (self.displacement(&force, shift).iter())
+                .zip(&base)
+                .map(|(d, b)| d - b)
+                .collect();
             let mut changed = false;
             for &i in &loaded {
                 let bound = self.friction * self.normal_force[i];
@@ -155,8 +178,9 @@ impl TangentialProblem<'_> {
         })
     }
 
-    /// Body 1's slip at every point for forces `force` and shift `shift`, mm.
-    fn slip(&self, force: &[f64], shift: f64) -> Vec<f64> {
+    /// Body 1's tangential displacement against body 2 at every point for forces `force` and
+    /// shift `shift`, mm, from the normally loaded state (elastic part and the plate's shift).
+    fn displacement(&self, force: &[f64], shift: f64) -> Vec<f64> {
         let n = force.len();
         (0..n)
             .map(|i| {
@@ -168,11 +192,12 @@ impl TangentialProblem<'_> {
     }
 
     /// The stick points' forces and the shift, with the slip points' forces fixed in
-    /// `force`: s_i = 0 at each stick point and the plate's equilibrium. None if singular.
+    /// `force`: each stick point's displacement kept at `base` (no slip in this stage) and the
+    /// plate's equilibrium under `load`. None if singular.
     fn solve_stick(
         &self,
         stick: &[usize],
-        load: f64,
+        (load, base): (f64, &[f64]),
         force: &mut [f64],
         shift: &mut f64,
         lu: &mut DenseLu,
@@ -190,7 +215,7 @@ impl TangentialProblem<'_> {
                 .filter(|j| !stick.contains(j))
                 .map(|j| self.a_tt[i * n + j] * force[j])
                 .sum();
-            rhs[r] = -fixed;
+            rhs[r] = base[i] - fixed;
         }
         for (c, &j) in stick.iter().enumerate() {
             matrix[(m - 1) * m + c] = self.tangent_x[j];
