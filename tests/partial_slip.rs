@@ -3,7 +3,7 @@
 
 use wearfem::complementarity::{ContactSolver, Direction, Method, Status};
 use wearfem::contact::CondensedContact;
-use wearfem::partial_slip::{PartialSlipError, TangentialProblem};
+use wearfem::partial_slip::{fitted_edge, PartialSlipError, TangentialProblem};
 use wearfem::problem::Problem;
 
 /// The tangential problem of `hertz` at degree `p` with μ = `friction`, and the contact
@@ -53,24 +53,6 @@ impl Setup {
             friction,
         }
     }
-}
-
-/// Where d² (d = `bound` − |q| inside the stick zone, d ∝ √(1 − x²/c²)) reaches zero on the
-/// least-squares line of d² against x² through the stick points beyond half of `c_guess`.
-fn fitted_edge(x: &[f64], d: &[f64], stick: &[bool], c_guess: f64) -> f64 {
-    let (mut sx, mut sy, mut sxx, mut sxy, mut count) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for ((xi, di), st) in x.iter().zip(d).zip(stick) {
-        if *st && xi.abs() > 0.5 * c_guess {
-            let (u, v) = (xi * xi, di * di);
-            sx += u;
-            sy += v;
-            sxx += u * u;
-            sxy += u * v;
-            count += 1.0;
-        }
-    }
-    let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
-    (-(sy - slope * sx) / count / slope).sqrt()
 }
 
 /// Mindlin and Deresiewicz: loaded to Q* and unloaded to Q, the outer annulus slips back:
@@ -208,20 +190,10 @@ fn the_stick_zone_and_the_shear_are_cattaneos() {
         // The edge itself: μp − |q| = μp₀ (c/a) √(1 − x²/c²) inside the stick zone, so its
         // square is linear in x² and vanishes at x² = c²; the least-squares line through the
         // stick points of the zone's outer half gives c.
-        let (mut sx, mut sy, mut sxx, mut sxy, mut count) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        for ((xi, qi), (pi, st)) in x.iter().zip(&q).zip(pressure.iter().zip(&stick)) {
-            if *st && xi.abs() > 0.5 * c {
-                let d = friction * pi - qi.abs();
-                let (u, v) = (xi * xi, d * d);
-                sx += u;
-                sy += v;
-                sxx += u * u;
-                sxy += u * v;
-                count += 1.0;
-            }
-        }
-        let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
-        let fitted = (-(sy - slope * sx) / count / slope).sqrt();
+        let d: Vec<f64> = (pressure.iter().zip(&q))
+            .map(|(p, q)| friction * p - q.abs())
+            .collect();
+        let fitted = fitted_edge(&x, &d, &stick, c);
         // 1 % of a, the bound; measured 0.15–0.42 %.
         assert!(
             (fitted - c).abs() < 0.01 * a,

@@ -14,6 +14,7 @@ mod axisymmetric_cases;
 mod cases;
 mod heat_cases;
 mod part_cases;
+mod partial_slip_cases;
 mod sliding_cases;
 mod wear_cases;
 
@@ -275,6 +276,7 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     axisymmetric_cases::ball(&mut checks)?;
     axisymmetric_cases::punch(&mut checks)?;
     axisymmetric_cases::washer(&mut checks)?;
+    partial_slip_cases::cattaneo(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks
             .iter_mut()
