@@ -204,6 +204,10 @@ impl TangentialProblem<'_> {
     ) -> Option<()> {
         let n = force.len();
         let m = stick.len() + 1;
+        let mut sticks = vec![false; n];
+        for &i in stick {
+            sticks[i] = true;
+        }
         let matrix = lu.storage(m);
         let mut rhs = vec![0.0; m];
         for (r, &i) in stick.iter().enumerate() {
@@ -212,7 +216,7 @@ impl TangentialProblem<'_> {
             }
             matrix[r * m + m - 1] = self.tangent_x[i];
             let fixed: f64 = (0..n)
-                .filter(|j| !stick.contains(j))
+                .filter(|&j| !sticks[j])
                 .map(|j| self.a_tt[i * n + j] * force[j])
                 .sum();
             rhs[r] = base[i] - fixed;
@@ -222,7 +226,7 @@ impl TangentialProblem<'_> {
         }
         matrix[(m - 1) * m + m - 1] = 0.0;
         let slipping: f64 = (0..n)
-            .filter(|j| !stick.contains(j))
+            .filter(|&j| !sticks[j])
             .map(|j| force[j] * self.tangent_x[j])
             .sum();
         rhs[m - 1] = -load - slipping;
