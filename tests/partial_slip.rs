@@ -214,3 +214,37 @@ fn a_load_at_the_friction_limit_is_gross_slip() {
     let solution = s.problem(0.3).solve(0.99 * 0.3 * total).unwrap();
     assert!(solution.stick.iter().any(|&st| st));
 }
+
+/// A review's findings: a stage that changes the load by nothing (a dwell) settles with no
+/// slip and the same forces (it cycled to the iteration limit), and a fretting cycle 0 → Q* → −Q* → Q* closes:
+/// the third stage's state is the first's, the second its mirror image.
+#[test]
+fn a_dwell_settles_and_a_fretting_cycle_closes() {
+    for p in [8, 12] {
+        let s = setup(p);
+        let problem = s.problem(0.3);
+        let total: f64 = s.normal_force.iter().sum();
+        let peak = 0.6 * 0.3 * total;
+        let first = problem.solve(peak).unwrap();
+        for again in [peak, peak * (1.0 - 1e-12)] {
+            let dwell = problem.solve_from(again, Some(&first)).unwrap();
+            // Nothing slips in a dwell (every loaded point sticks in it) and the forces stay:
+            // round-off, the displacements some 1e-3 mm, the forces some 1e2 N, the solves
+            // good to 1e-13 of them.
+            assert!(dwell.slip.iter().all(|s| s.abs() < 1e-12), "p = {p}");
+            let largest = first.force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
+            for (f, f0) in dwell.force.iter().zip(&first.force) {
+                assert!((f - f0).abs() < 1e-9 * largest, "p = {p}: {f} against {f0}");
+            }
+        }
+        let back = problem.solve_from(-peak, Some(&first)).unwrap();
+        let again = problem.solve_from(peak, Some(&back)).unwrap();
+        let largest = first.force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
+        for i in 0..first.force.len() {
+            // 1e-9 of the largest force: a few dense solves' round-off.
+            assert!((back.force[i] + first.force[i]).abs() < 1e-9 * largest);
+            assert!((again.force[i] - first.force[i]).abs() < 1e-9 * largest);
+        }
+        assert_eq!(again.stick, first.stick);
+    }
+}
