@@ -4,6 +4,7 @@
 //! the stages' results, and know nothing of the jobs that call them.
 
 pub mod codes;
+pub mod edge_fit;
 pub mod p_check;
 pub mod steady_check;
 pub mod validity;

@@ -133,20 +133,10 @@ fn a_ball_on_a_flat_is_hertzian() {
         );
         // Its radius as measured from the pressure's shape: p² is linear in r² with its zero
         // at a² (least squares over the points inside 0.9 of the last one in contact).
-        let inside: Vec<(f64, f64)> = (r.iter().zip(&pressure))
+        let inside = (r.iter().zip(&pressure))
             .filter(|(ri, _)| **ri < 0.9 * r[last])
-            .map(|(ri, pi)| (ri * ri, pi * pi))
-            .collect();
-        let count = inside.len() as f64;
-        let (sx, sy) = inside
-            .iter()
-            .fold((0.0, 0.0), |(a, b), (x, y)| (a + x, b + y));
-        let (sxx, sxy) = inside
-            .iter()
-            .fold((0.0, 0.0), |(a, b), (x, y)| (a + x * x, b + x * y));
-        let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
-        let intercept = (sy - slope * sx) / count;
-        let measured = (-intercept / slope).sqrt();
+            .map(|(ri, pi)| (*ri, *pi));
+        let measured = wearfem::checks::edge_fit::square_root_edge(inside);
         assert!(
             (measured - a).abs() < 0.01 * a,
             "{case}: zone radius {measured}, Hertz {a}"

@@ -261,22 +261,12 @@ impl TangentialProblem<'_> {
 }
 
 /// The edge c of a stick zone |x| < c from a margin that vanishes there like a square root,
-/// d = D √(1 − x²/c²) (Cattaneo's μp − |q|, Mindlin and Deresiewicz's 2μp − |Δq|): d² is
-/// linear in x² and reaches zero at x² = c², so the least-squares line of d² against x²
-/// through the stick points (`stick`) beyond half of `guess` (mm) gives c between the points,
-/// to a fraction of their spacing. `x` in mm, `d` in any unit.
+/// d = D √(1 − x²/c²) (Cattaneo's μp − |q|, Mindlin and Deresiewicz's 2μp − |Δq|), by
+/// [`crate::checks::edge_fit::square_root_edge`] through the stick points (`stick`) beyond
+/// half of `guess` (mm). `x` in mm, `d` in any unit.
 pub fn fitted_edge(x: &[f64], d: &[f64], stick: &[bool], guess: f64) -> f64 {
-    let (mut sx, mut sy, mut sxx, mut sxy, mut count) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for ((xi, di), st) in x.iter().zip(d).zip(stick) {
-        if *st && xi.abs() > 0.5 * guess {
-            let (u, v) = (xi * xi, di * di);
-            sx += u;
-            sy += v;
-            sxx += u * u;
-            sxy += u * v;
-            count += 1.0;
-        }
-    }
-    let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
-    (-(sy - slope * sx) / count / slope).sqrt()
+    let inside = (x.iter().zip(d).zip(stick))
+        .filter(|((xi, _), st)| **st && xi.abs() > 0.5 * guess)
+        .map(|((xi, di), _)| (*xi, *di));
+    crate::checks::edge_fit::square_root_edge(inside)
 }

@@ -139,19 +139,10 @@ pub fn ball(checks: &mut Checks) -> Outcome {
         Bound::Relative(0.01),
     );
     let last = pressure.iter().rposition(|&p| p > 0.0).unwrap_or(0);
-    let inside: Vec<(f64, f64)> = (r.iter().zip(&pressure))
+    let inside = (r.iter().zip(&pressure))
         .filter(|(ri, _)| **ri < 0.9 * r[last])
-        .map(|(ri, pi)| (ri * ri, pi * pi))
-        .collect();
-    let count = inside.len() as f64;
-    let (sx, sy) = inside
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x, b + y));
-    let (sxx, sxy) = inside
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x * x, b + x * y));
-    let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
-    let measured = (-(sy - slope * sx) / count / slope).sqrt();
+        .map(|(ri, pi)| (*ri, *pi));
+    let measured = crate::checks::edge_fit::square_root_edge(inside);
     push(
         checks,
         "axisymmetric.hertz_a",

@@ -1,0 +1,31 @@
+//! Where a profile that vanishes like a square root reaches zero: d = D √(1 − x²/c²) (Hertz's
+//! pressure at the edge of its zone, Cattaneo's μp − |q| at the edge of a stick zone) has d²
+//! linear in x², zero at x² = c², so the least-squares line of d² against x² through samples
+//! inside the zone gives c between the points, to a fraction of their spacing. The checks
+//! against closed forms (tests, `wearfem validate`) measure zone edges this way.
+
+/// c (mm) from samples (x in mm, d in any unit) inside the zone; NaN for fewer than two
+/// distinct x², or a line that does not fall to zero at positive x².
+pub fn square_root_edge(samples: impl IntoIterator<Item = (f64, f64)>) -> f64 {
+    let (mut sx, mut sy, mut sxx, mut sxy, mut count) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for (x, d) in samples {
+        let (u, v) = (x * x, d * d);
+        sx += u;
+        sy += v;
+        sxx += u * u;
+        sxy += u * v;
+        count += 1.0;
+    }
+    let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+    (-(sy - slope * sx) / count / slope).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_square_root_profile_gives_its_edge() {
+        // Exact samples of 3 √(1 − x²/4): the line is exact, c = 2 to round-off.
+        let samples = [0.3, 0.9, 1.2, 1.7].map(|x: f64| (x, 3.0 * (1.0 - x * x / 4.0).sqrt()));
+        assert!((super::square_root_edge(samples) - 2.0).abs() < 1e-12);
+    }
+}
