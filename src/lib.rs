@@ -90,7 +90,7 @@ pub use fe::{
 pub use input::{examples, gmsh, heat as heat_input, overrides, problem, schema, wear_units};
 pub use jobs::{driver, sweep, validate};
 pub use report::{deformation, output, plot, vtk};
-pub use solver::{capacitance, complementarity, dense, lemke, partial_slip, updated_lu};
+pub use solver::{capacitance, complementarity, dense, fretting, lemke, partial_slip, updated_lu};
 pub use steady_state::{
     monotonic_shape, paper_steady, spline_method, steady, thermal as thermal_steady,
 };

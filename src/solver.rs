@@ -6,6 +6,7 @@
 pub mod capacitance;
 pub mod complementarity;
 pub mod dense;
+pub mod fretting;
 pub mod lemke;
 pub mod partial_slip;
 pub mod updated_lu;

@@ -43,6 +43,9 @@ pub struct PartialSlip {
     pub slip: Vec<f64>,
     /// The plate's rigid shift along x, mm.
     pub shift: f64,
+    /// The tangential force on body 1's plate, N along +x (−Σ F_j τ_j,x: the load itself under
+    /// force control, what the shift needs under displacement control).
+    pub load: f64,
     /// Active-set iterations.
     pub iterations: usize,
 }
@@ -65,6 +68,18 @@ pub enum PartialSlipError {
         /// Iterations made.
         iterations: usize,
     },
+}
+
+/// How a stage's tangential loading is given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TangentialControl {
+    /// A tangential force Q on body 1's plate, N along +x (a fretting test under force
+    /// control). Below the friction limit only: at it the shift is undetermined.
+    Force(f64),
+    /// The plate's shift δ against body 2's supports, mm along +x (displacement control).
+    /// Any shift: beyond the gross-slip shift every point slips and the force is the limit,
+    /// so that today's full slip comes out of the same solve.
+    Displacement(f64),
 }
 
 /// The tangential problem's data: `a_tt` (mm/N, row-major N × N), the tangents' x
@@ -106,6 +121,17 @@ impl TangentialProblem<'_> {
         load: f64,
         from: Option<&PartialSlip>,
     ) -> Result<PartialSlip, PartialSlipError> {
+        self.solve_stage(TangentialControl::Force(load), from)
+    }
+
+    /// The stage of [`TangentialProblem::solve_from`] under either control: a force on the
+    /// plate, or the plate's shift (then without a friction limit: a shift beyond the gross-slip
+    /// one slips every point).
+    pub fn solve_stage(
+        &self,
+        control: TangentialControl,
+        from: Option<&PartialSlip>,
+    ) -> Result<PartialSlip, PartialSlipError> {
         let n = self.normal_force.len();
         // The relative tangential displacement the previous state had: a stage's slip is
         // measured from it.
@@ -119,16 +145,21 @@ impl TangentialProblem<'_> {
             .map(|&i| self.friction * self.normal_force[i] * self.tangent_x[i].abs())
             .sum();
         // (Round-off of the two sums must not turn the limit itself into partial slip.)
-        if load.abs() >= limit * (1.0 - 1e-12) {
-            return Err(PartialSlipError::GrossSlip {
-                load: load.abs(),
-                limit,
-            });
+        if let TangentialControl::Force(load) = control {
+            if load.abs() >= limit * (1.0 - 1e-12) {
+                return Err(PartialSlipError::GrossSlip {
+                    load: load.abs(),
+                    limit,
+                });
+            }
         }
         // Slip direction of each point: 0 stick, ±1 the sign of its slip.
         let mut direction = vec![0i8; n];
         let mut force = vec![0.0; n];
-        let mut shift = 0.0;
+        let mut shift = match control {
+            TangentialControl::Displacement(shift) => shift,
+            TangentialControl::Force(_) => 0.0,
+        };
         let mut lu = DenseLu::default();
         for iteration in 1..=MAX_ITERATIONS {
             for &i in &loaded {
@@ -141,7 +172,7 @@ impl TangentialProblem<'_> {
                 .copied()
                 .filter(|&i| direction[i] == 0)
                 .collect();
-            self.solve_stick(&stick, (load, &base), &mut force, &mut shift, &mut lu)
+            self.solve_stick(&stick, (control, &base), &mut force, &mut shift, &mut lu)
                 .ok_or(PartialSlipError::NotSettled {
                     iterations: iteration,
                 })?;
@@ -178,11 +209,17 @@ impl TangentialProblem<'_> {
                     .enumerate()
                     .map(|(i, &s)| if direction[i] == 0 { 0.0 } else { s })
                     .collect();
+                let load = -force
+                    .iter()
+                    .zip(self.tangent_x)
+                    .map(|(f, t)| f * t)
+                    .sum::<f64>();
                 return Ok(PartialSlip {
                     force,
                     stick,
                     slip,
                     shift,
+                    load,
                     iterations: iteration,
                 });
             }
@@ -205,19 +242,24 @@ impl TangentialProblem<'_> {
             .collect()
     }
 
-    /// The stick points' forces and the shift, with the slip points' forces fixed in
-    /// `force`: each stick point's displacement kept at `base` (no slip in this stage) and the
-    /// plate's equilibrium under `load`. None if singular.
+    /// The stick points' forces (and under force control the shift), with the slip points'
+    /// forces fixed in `force`: each stick point's displacement kept at `base` (no slip in this
+    /// stage), and the plate's equilibrium under the load or its shift held. None if singular.
     fn solve_stick(
         &self,
         stick: &[usize],
-        (load, base): (f64, &[f64]),
+        (control, base): (TangentialControl, &[f64]),
         force: &mut [f64],
         shift: &mut f64,
         lu: &mut DenseLu,
     ) -> Option<()> {
         let n = force.len();
-        let m = stick.len() + 1;
+        let force_control = matches!(control, TangentialControl::Force(_));
+        // Under displacement control the shift is known and the equilibrium row goes.
+        let m = stick.len() + usize::from(force_control);
+        if m == 0 {
+            return Some(());
+        }
         let mut sticks = vec![false; n];
         for &i in stick {
             sticks[i] = true;
@@ -228,22 +270,28 @@ impl TangentialProblem<'_> {
             for (c, &j) in stick.iter().enumerate() {
                 matrix[r * m + c] = self.a_tt[i * n + j];
             }
-            matrix[r * m + m - 1] = self.tangent_x[i];
             let fixed: f64 = (0..n)
                 .filter(|&j| !sticks[j])
                 .map(|j| self.a_tt[i * n + j] * force[j])
                 .sum();
             rhs[r] = base[i] - fixed;
+            if force_control {
+                matrix[r * m + m - 1] = self.tangent_x[i];
+            } else {
+                rhs[r] -= *shift * self.tangent_x[i];
+            }
         }
-        for (c, &j) in stick.iter().enumerate() {
-            matrix[(m - 1) * m + c] = self.tangent_x[j];
+        if let TangentialControl::Force(load) = control {
+            for (c, &j) in stick.iter().enumerate() {
+                matrix[(m - 1) * m + c] = self.tangent_x[j];
+            }
+            matrix[(m - 1) * m + m - 1] = 0.0;
+            let slipping: f64 = (0..n)
+                .filter(|&j| !sticks[j])
+                .map(|j| force[j] * self.tangent_x[j])
+                .sum();
+            rhs[m - 1] = -load - slipping;
         }
-        matrix[(m - 1) * m + m - 1] = 0.0;
-        let slipping: f64 = (0..n)
-            .filter(|&j| !sticks[j])
-            .map(|j| force[j] * self.tangent_x[j])
-            .sum();
-        rhs[m - 1] = -load - slipping;
         if !lu.factor_in_place() {
             return None;
         }
@@ -255,7 +303,9 @@ impl TangentialProblem<'_> {
         for (r, &i) in stick.iter().enumerate() {
             force[i] = rhs[r];
         }
-        *shift = rhs[m - 1];
+        if force_control {
+            *shift = rhs[m - 1];
+        }
         Some(())
     }
 }
