@@ -2,6 +2,7 @@
 
 pub mod duration;
 pub mod examples;
+pub mod fretting;
 pub mod gmsh;
 pub mod heat;
 pub mod overrides;

@@ -87,7 +87,10 @@ pub use checks::{codes, p_check, steady_check, validity, warnings};
 pub use fe::{
     basis, conduction, dofs, elasticity, fields, geometry, loads, material, mesh, quadrature,
 };
-pub use input::{examples, gmsh, heat as heat_input, overrides, problem, schema, wear_units};
+pub use input::{
+    examples, fretting as fretting_input, gmsh, heat as heat_input, overrides, problem, schema,
+    wear_units,
+};
 pub use jobs::{driver, sweep, validate};
 pub use report::{deformation, output, plot, vtk};
 pub use solver::{capacitance, complementarity, dense, fretting, lemke, partial_slip, updated_lu};

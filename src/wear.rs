@@ -14,6 +14,7 @@ use crate::kinematics::{half_period_sliding, paper_schedule};
 
 mod adaptive;
 mod body_wear;
+pub mod fretting;
 pub mod kinematics;
 pub mod law;
 mod outcome;

@@ -487,7 +487,11 @@ fn the_settings_check_refuses_no_problem_that_solves() {
         problems.push(wearfem::problem::Problem::with_overrides(&text, &file, &[]).unwrap());
     }
     for problem in &problems {
-        if problem.spec.contact.is_none() || problem.spec.wear.is_none() {
+        // Fretting problems are refused by name (not built for studies yet).
+        if problem.spec.contact.is_none()
+            || problem.spec.wear.is_none()
+            || problem.spec.fretting.is_some()
+        {
             continue;
         }
         // A steady state needs a plate that moves (tests/problems/fixed-plate-load.toml holds

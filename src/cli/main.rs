@@ -18,6 +18,7 @@ use wearfem::paper_steady::{MethodSettings, Sensitivities, SteadyMethod};
 use wearfem::problem::Problem;
 
 mod commands;
+mod fretting;
 mod progress;
 
 use commands::{method_settings, steady_by, sweep, validate};
@@ -304,6 +305,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             set,
         } => {
             let p = load(&problem, &set)?;
+            if wearfem::jobs::fretting::is_fretting(&p) {
+                return fretting::contact(&p, &out, wants_vtk(vtk, &p));
+            }
             let (summary, contact, solution, info) = driver::contact(&p)?;
             let solved = info.status == wearfem::complementarity::Status::Solved;
             if solved {
@@ -355,6 +359,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let p = load(&name, &set)?;
             if wearfem::jobs::sliding::is_sliding(&p) {
                 return commands::run_sliding(&p, &out, steps, wants_vtk(vtk, &p));
+            }
+            if wearfem::jobs::fretting::is_fretting(&p) {
+                return fretting::run(&p, &out, steps, wants_vtk(vtk, &p));
             }
             let bar = progress::StepBar::new(&p, steps, quiet);
             let result = driver::wear_checked(&p, steps, |s| {
@@ -471,6 +478,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let p = load(&problem, &set)?;
             // The paper's §6 methods; `exact` keeps the direct path below (any b, either
             // sliding, ParaView output), whose summary the Python layer reproduces.
+            if wearfem::jobs::fretting::is_fretting(&p) {
+                if method != SteadyMethod::Exact {
+                    return Err(Failure::Input(format!("{}: --method applies to the paper's steady state of reciprocating sliding; a fretting problem's steady state is the final state of partial slip, found directly (leave --method out)", p.file)));
+                }
+                return fretting::steady(&p, &out, wants_vtk(vtk, &p));
+            }
             if method != SteadyMethod::Exact {
                 return steady_by(&p, method, settings, &out, wants_vtk(vtk, &p));
             }

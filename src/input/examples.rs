@@ -5,6 +5,10 @@
 pub const EXAMPLES: &[(&str, &str)] = &[
     ("lame", include_str!("../../examples/lame.toml")),
     ("hertz", include_str!("../../examples/hertz.toml")),
+    (
+        "fretting-cylinder",
+        include_str!("../../examples/fretting-cylinder.toml"),
+    ),
     ("punch-a", include_str!("../../examples/punch-a.toml")),
     ("punch-b20", include_str!("../../examples/punch-b20.toml")),
     ("punch-b40", include_str!("../../examples/punch-b40.toml")),

@@ -234,6 +234,7 @@ impl Problem {
         }
         problem.meshes = Some(built);
         problem.heat_settings()?;
+        problem.fretting_settings()?;
         for (name, probe) in &problem.spec.probes {
             problem.body_index(&probe.body).map_err(|_| {
                 problem.error(

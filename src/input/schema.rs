@@ -315,6 +315,8 @@ pub struct ProblemSpec {
     pub wear: Option<crate::wear::WearSpec>,
     /// Frictional heat, conduction and thermal distortion (see [`crate::heat_input`]).
     pub heat: Option<crate::heat_input::HeatSpec>,
+    /// A tangential loading under which points stick or slip (see [`crate::fretting_input`]).
+    pub fretting: Option<crate::fretting_input::FrettingSpec>,
     /// Output settings.
     pub output: Option<OutputSpec>,
 }

@@ -101,6 +101,9 @@ impl Sweep {
 /// a partner on body 2, a probe or `wear.shape_zero_at` off the contact edge) and a body whose
 /// supports do not hold it (found when it is factorised) wait for the variant's solve.
 pub fn check_settings(problem: &Problem, job: Job) -> Result<(), ProblemError> {
+    if super::fretting::is_fretting(problem) {
+        return Err(problem.error("fretting", "parameter studies of fretting problems are not built yet: run `wearfem run` or `wearfem steady` on each variant (--set)"));
+    }
     crate::contact::check_settings(problem)?;
     driver::method(problem)?;
     driver::direction(problem)?;

@@ -206,6 +206,12 @@ fn tick(v: f64, log: bool) -> String {
     }
 }
 
+/// Tick label of the x axis (positions in mm, steps, cycles: never of size 1e-15), where a
+/// tick meant to be 0 computed as lo + k·step can come out as a round-off such as −1.4e-18.
+fn x_tick(v: f64) -> String {
+    tick(if v.abs() < 1e-15 { 0.0 } else { v }, false)
+}
+
 macro_rules! draw_chart {
     ($root:expr, $figure:expr, $points:expr, $x:expr, $y:expr) => {{
         let mut chart = ChartBuilder::on(&$root)
@@ -220,7 +226,7 @@ macro_rules! draw_chart {
             .y_desc($figure.y_label)
             .label_style(("sans-serif", 14))
             .y_label_formatter(&|v: &f64| tick(*v, $figure.log_y))
-            .x_label_formatter(&|v: &f64| tick(*v, false))
+            .x_label_formatter(&|v: &f64| x_tick(*v))
             .axis_desc_style(("sans-serif", 16))
             .draw()?;
         for (k, (s, pts)) in $figure.series.iter().zip($points.iter()).enumerate() {
