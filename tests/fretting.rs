@@ -184,3 +184,20 @@ fn bad_fretting_input_is_refused_by_name() {
     let (code, stderr) = wearfem(&["run", "fretting-cylinder", "--steps", "3"]);
     assert_eq!(code, 2, "{stderr}");
 }
+
+/// The full-slip jobs of the library refuse a fretting problem by name instead of sliding
+/// every point in silence (the command line chooses the fretting jobs itself).
+#[test]
+fn full_slip_jobs_refuse_a_fretting_problem() {
+    let p = problem(&[]);
+    let key = |e: wearfem::driver::JobError| match e {
+        wearfem::driver::JobError::Problem(e) => e.key,
+        other => panic!("{other}"),
+    };
+    assert_eq!(key(wearfem::driver::contact(&p).err().unwrap()), "fretting");
+    assert_eq!(
+        key(wearfem::driver::wear(&p, Some(2), |_| {}).err().unwrap()),
+        "fretting"
+    );
+    assert_eq!(key(wearfem::driver::steady(&p).err().unwrap()), "fretting");
+}

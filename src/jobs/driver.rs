@@ -285,6 +285,7 @@ fn info_json(info: &SolveInfo) -> Value {
 pub fn contact(
     problem: &Problem,
 ) -> Result<(Value, CondensedContact, ContactSolution, SolveInfo), JobError> {
+    super::fretting::require_full_slip(problem, "this contact solve (full slip)")?;
     let start = Instant::now();
     let (contact, _, _) = CondensedContact::build(problem)?;
     check_contact_probes(problem, &contact)?;
@@ -442,6 +443,7 @@ pub fn steady_with_heat(
     JobError,
 > {
     super::sliding::require_fixed_pairs(problem, "the steady state")?;
+    super::fretting::require_full_slip(problem, "this steady state (of full slip)")?;
     let spec = problem
         .spec
         .wear
@@ -523,6 +525,7 @@ pub fn steady_by(
     settings: crate::paper_steady::MethodSettings,
 ) -> Result<(crate::paper_steady::MethodOutcome, CondensedContact, f64), JobError> {
     super::sliding::require_fixed_pairs(problem, "the steady state")?;
+    super::fretting::require_full_slip(problem, "this steady state (of full slip)")?;
     if problem.analysis.is_axisymmetric() && method != crate::paper_steady::SteadyMethod::Exact {
         // Their splines and averages are laid out along a plane edge with one sliding
         // distance; the exact method knows each point's own.

@@ -21,6 +21,15 @@ pub fn is_fretting(problem: &Problem) -> bool {
     problem.spec.fretting.is_some()
 }
 
+/// Refuse a fretting problem in a job of full slip (`what`), which would otherwise solve it
+/// with every point sliding and say nothing: the fretting jobs are this module's.
+pub fn require_full_slip(problem: &Problem, what: &str) -> Result<(), ProblemError> {
+    if is_fretting(problem) {
+        return Err(problem.error("fretting", format!("this problem has a [fretting] section, and {what} would slide every point: use the fretting jobs (`wearfem contact`, `run`, `steady` choose them; library: wearfem::jobs::fretting)")));
+    }
+    Ok(())
+}
+
 /// A fretting problem's contact, ready for its cycles.
 pub struct FrettingSetup {
     /// The settings.

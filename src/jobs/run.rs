@@ -104,6 +104,7 @@ pub fn wear_until(
     on_step: impl FnMut(&crate::wear::StepRecord) -> ControlFlow<()>,
 ) -> Result<WearRun, JobError> {
     super::sliding::require_fixed_pairs(problem, "this run (the fixed pairs' integrator)")?;
+    super::fretting::require_full_slip(problem, "this run (of full slip)")?;
     let spec = problem
         .spec
         .wear

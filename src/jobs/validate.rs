@@ -12,6 +12,7 @@ use std::time::Instant;
 
 mod axisymmetric_cases;
 mod cases;
+mod fretting_cases;
 mod heat_cases;
 mod part_cases;
 mod partial_slip_cases;
@@ -277,6 +278,8 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     axisymmetric_cases::punch(&mut checks)?;
     axisymmetric_cases::washer(&mut checks)?;
     partial_slip_cases::cattaneo(&mut checks)?;
+    fretting_cases::cycle_energy(&mut checks)?;
+    fretting_cases::final_state(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks
             .iter_mut()

@@ -1,0 +1,107 @@
+//! The validation cases of fretting (issue 30): a fretting cycle's dissipated energy against
+//! the closed-form tractions and slips, and the final state of partial slip against
+//! Ciavarella and Hills' pressure. The bounds are tests/partial_slip.rs's and
+//! tests/fretting.rs's.
+
+use super::cases::{fail, push, Checks, Outcome};
+use super::Bound;
+use crate::complementarity::{ContactSolver, Direction, Method, Status};
+use crate::contact::CondensedContact;
+use crate::fretting::{FrettingControl, FrettingCycle, FrettingLoading};
+use crate::partial_slip::TangentialProblem;
+use std::f64::consts::PI;
+
+/// `hertz` at half its load (a = 2 mm), p = 12, μ = 0.3, cycled at ±0.9 μP: the energy
+/// 4μ ∫ p |s| dx over both slip zones, |s| = (μp₀/(E*a))[|x|√(x² − c²) − c² arcosh(|x|/c)].
+pub fn cycle_energy(checks: &mut Checks) -> Outcome {
+    let top = 17.2556;
+    let p = super::cases::problem(
+        "hertz",
+        &[("p = 8", "p = 12"), ("normal = 38.825", "normal = 17.2556")],
+    )?;
+    let (contact, body1, body2) = CondensedContact::build(&p).map_err(|e| fail("hertz", e))?;
+    let (normal, info) = ContactSolver::new(&contact, Method::ActiveSet)
+        .solve(&contact.points.initial_gap, Direction::Plus);
+    if info.status != Status::Solved {
+        return Err(fail("hertz", "the normal contact solve failed"));
+    }
+    let a_tt = contact
+        .tangential_flexibility(&p, &body1, &body2)
+        .map_err(|e| fail("hertz", e))?;
+    let force: Vec<f64> = (normal.pressure.iter().zip(contact.areas()))
+        .map(|(p, a)| p * a)
+        .collect();
+    let tangent_x: Vec<f64> = contact.points.tangent.iter().map(|t| t[0]).collect();
+    let (friction, ratio) = (0.3, 0.9);
+    let problem = TangentialProblem {
+        a_tt: &a_tt,
+        tangent_x: &tangent_x,
+        normal_force: &force,
+        friction,
+    };
+    let total: f64 = force.iter().sum();
+    let loading = FrettingLoading {
+        control: FrettingControl::Force,
+        amplitude: ratio * friction * total,
+        stages: 16,
+    };
+    let cycle = FrettingCycle::solve(&problem, &loading).map_err(|e| fail("hertz", e))?;
+    let (radius, load) = (500.0f64, top * 40.0);
+    let e_star = 2.0e5 / (2.0 * (1.0 - 0.09));
+    let a = (4.0 * load * radius / (PI * e_star)).sqrt();
+    let p0 = 2.0 * load / (PI * a);
+    let c = a * (1.0f64 - ratio).sqrt();
+    let m = 4000;
+    let h = (a - c) / m as f64;
+    let integral: f64 = (0..m)
+        .map(|k| {
+            let x = c + (k as f64 + 0.5) * h;
+            let slip = friction * p0 / (e_star * a)
+                * (x * (x * x - c * c).sqrt() - c * c * (x / c).acosh());
+            p0 * (1.0 - x * x / (a * a)).sqrt() * slip * h
+        })
+        .sum();
+    push(
+        checks,
+        "fretting.cycle_energy",
+        "hertz at half its load (a = 2 mm, p = 12), μ = 0.3, a cycle ±0.9 μP: the energy friction dissipates",
+        "N·mm/mm",
+        8.0 * friction * integral,
+        "Mindlin–Deresiewicz's tractions and slips, 4μ∫p|s|dx by quadrature",
+        cycle.dissipated,
+        Bound::Relative(0.02),
+    );
+    Ok(())
+}
+
+/// `fretting-cylinder`'s final state: the pressure at the centre against Ciavarella and Hills'
+/// (E*/(2R))c + (P − πE*c²/(4R))/(πc), with c the discrete stick zone's edge (midway between
+/// its last point and the next).
+pub fn final_state(checks: &mut Checks) -> Outcome {
+    let p = super::cases::problem("fretting-cylinder", &[])?;
+    let steady = crate::jobs::fretting::steady(&p).map_err(|e| fail("fretting-cylinder", e))?;
+    let s = &steady.state;
+    let x = steady.setup.x();
+    let last = (0..x.len())
+        .filter(|&i| s.pressure[i] > 0.0 && x[i] > 0.0)
+        .max_by(|&i, &j| x[i].total_cmp(&x[j]))
+        .ok_or_else(|| fail("fretting-cylinder", "no contact in the final state"))?;
+    let c = 0.5 * (x[last] + x.get(last + 1).copied().unwrap_or(x[last]));
+    let (radius, load, e_star) = (10.0f64, 27.62 * 2.0, 2.0e5 / (2.0 * (1.0 - 0.09)));
+    let closed =
+        e_star / (2.0 * radius) * c + (load - PI * e_star * c * c / (4.0 * radius)) / (PI * c);
+    let centre = (0..x.len())
+        .min_by(|&i, &j| x[i].abs().total_cmp(&x[j].abs()))
+        .ok_or_else(|| fail("fretting-cylinder", "no contact points"))?;
+    push(
+        checks,
+        "fretting.final_state_centre",
+        "fretting-cylinder (Q₀ = 0.5 μP): the final state's pressure at the centre",
+        "MPa",
+        closed,
+        "Ciavarella–Hills: the load on the stick zone's unworn profile",
+        s.pressure[centre],
+        Bound::Relative(0.02),
+    );
+    Ok(())
+}
