@@ -9,6 +9,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         "fretting-cylinder",
         include_str!("../../examples/fretting-cylinder.toml"),
     ),
+    (
+        "fretting-gross-slip",
+        include_str!("../../examples/fretting-gross-slip.toml"),
+    ),
     ("punch-a", include_str!("../../examples/punch-a.toml")),
     ("punch-b20", include_str!("../../examples/punch-b20.toml")),
     ("punch-b40", include_str!("../../examples/punch-b40.toml")),

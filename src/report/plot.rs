@@ -206,14 +206,18 @@ fn tick(v: f64, log: bool) -> String {
     }
 }
 
-/// Tick label of the x axis (positions in mm, steps, cycles: never of size 1e-15), where a
-/// tick meant to be 0 computed as lo + k·step can come out as a round-off such as −1.4e-18.
-fn x_tick(v: f64) -> String {
-    tick(if v.abs() < 1e-15 { 0.0 } else { v }, false)
+/// `v` with a round-off of 0 made 0: a tick meant to be 0, computed as lo + k·step, can come
+/// out as −1.4e-18 on an axis spanning `span` (0: leave `v` as it is).
+fn snap(v: f64, span: f64) -> f64 {
+    if v.abs() < 1e-12 * span {
+        0.0
+    } else {
+        v
+    }
 }
 
 macro_rules! draw_chart {
-    ($root:expr, $figure:expr, $points:expr, $x:expr, $y:expr) => {{
+    ($root:expr, $figure:expr, $points:expr, $x:expr, $y:expr, $spans:expr) => {{
         let mut chart = ChartBuilder::on(&$root)
             .caption(&$figure.title, ("sans-serif", 20))
             .margin(15)
@@ -225,8 +229,8 @@ macro_rules! draw_chart {
             .x_desc($figure.x_label)
             .y_desc($figure.y_label)
             .label_style(("sans-serif", 14))
-            .y_label_formatter(&|v: &f64| tick(*v, $figure.log_y))
-            .x_label_formatter(&|v: &f64| x_tick(*v))
+            .y_label_formatter(&|v: &f64| tick(snap(*v, $spans.1), $figure.log_y))
+            .x_label_formatter(&|v: &f64| tick(snap(*v, $spans.0), false))
             .axis_desc_style(("sans-serif", 16))
             .draw()?;
         for (k, (s, pts)) in $figure.series.iter().zip($points.iter()).enumerate() {
@@ -274,9 +278,16 @@ where
         return Ok(root.present()?);
     };
     if figure.log_y {
-        draw_chart!(root, figure, points, x0..x1, (y0..y1).log_scale());
+        draw_chart!(
+            root,
+            figure,
+            points,
+            x0..x1,
+            (y0..y1).log_scale(),
+            (x1 - x0, 0.0)
+        );
     } else {
-        draw_chart!(root, figure, points, x0..x1, y0..y1);
+        draw_chart!(root, figure, points, x0..x1, y0..y1, (x1 - x0, y1 - y0));
     }
     root.present()?;
     Ok(())
