@@ -59,6 +59,7 @@ impl Setup {
             tangent_x: &self.tangent_x,
             normal_force: &self.normal_force,
             friction,
+            coupling: None,
         }
     }
 }

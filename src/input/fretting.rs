@@ -40,6 +40,11 @@ pub struct FrettingSpec {
     /// (default 1).
     #[serde(default = "one")]
     pub tolerance: f64,
+    /// Whether the tangential forces act back on the pressure and the plate (true: exact;
+    /// false: Cattaneo's uncoupled problem, the normal forces held, exact for two bodies of
+    /// one material in the half-space limit). Default: coupled when the two bodies' materials
+    /// differ (Dundurs' β ≠ 0), uncoupled when they are one material.
+    pub coupled: Option<bool>,
 }
 
 fn sixteen() -> usize {
@@ -59,6 +64,8 @@ pub struct FrettingSettings {
     pub friction: f64,
     /// Relative local error allowed in a jump over many cycles.
     pub tolerance: f64,
+    /// The coupled problem (the tangential forces act on the pressure and the plate).
+    pub coupled: bool,
     /// The wear of a run, when the problem has a `[wear]` section.
     pub wear: Option<FrettingWearSettings>,
 }
@@ -150,7 +157,10 @@ impl Problem {
                 ),
             ));
         }
-        self.check_fretting_model(control)?;
+        let coupled = spec
+            .coupled
+            .unwrap_or_else(|| !self.one_material_in_contact());
+        self.check_fretting_model(control, coupled)?;
         let friction = self.spec.contact.as_ref().map_or(0.0, |c| c.friction);
         if friction <= 0.0 {
             return Err(self.error(
@@ -166,13 +176,18 @@ impl Problem {
             },
             friction,
             tolerance: spec.tolerance / 100.0,
+            coupled,
             wear: self.fretting_wear()?,
         }))
     }
 
     /// What the fretting model needs of the rest of the problem: a plate that translates or is
     /// held, a plane analysis, one fixed contact without heat.
-    fn check_fretting_model(&self, control: FrettingControl) -> Result<(), ProblemError> {
+    fn check_fretting_model(
+        &self,
+        control: FrettingControl,
+        coupled: bool,
+    ) -> Result<(), ProblemError> {
         if self.analysis.is_axisymmetric() {
             return Err(self.error("fretting", "fretting of bodies of revolution is not built: an axisymmetric contact's tangential loading (a torsion or an axial shift) needs the tangential problem in (r, z, θ); use a plane analysis"));
         }
@@ -188,9 +203,36 @@ impl Problem {
         };
         match (plate.motion.as_str(), control) {
             ("vertical", _) | ("fixed", FrettingControl::Displacement) => Ok(()),
+            ("vertical_rotation", _) if coupled => Ok(()),
+            ("vertical_rotation", _) => Err(self.error("plate.motion", "is \"vertical_rotation\" with fretting.coupled = false: a plate that rotates turns under the tangential force, which only the coupled problem carries (leave fretting.coupled out, or true)")),
             ("fixed", FrettingControl::Force) => Err(self.error("plate.motion", "is \"fixed\" and the fretting loading is a force: a held plate takes the force itself and nothing reaches the contact. Give plate.motion = \"vertical\" (the plate then shifts under the force), or fretting.loading = \"displacement\" (the held plate's shift)")),
-            (other, _) => Err(self.error("plate.motion", format!("is \"{other}\": under fretting the plate translates (\"vertical\", shifting along x under the tangential loading) or is held (\"fixed\", displacement control only); a plate that rotates would turn under the tangential force, a coupling the fretting model does not have"))),
+            (other, _) => Err(self.error("plate.motion", format!("must be \"vertical\", \"vertical_rotation\" or \"fixed\", got \"{other}\""))),
         }
+    }
+
+    /// Whether the two contact bodies are of one elastic material (every block of both names
+    /// materials of the same E and ν; a Gmsh body counts as not).
+    fn one_material_in_contact(&self) -> bool {
+        let Some(contact) = &self.spec.contact else {
+            return false;
+        };
+        let names: Vec<String> = self.spec.materials.keys().cloned().collect();
+        let mut constants = Vec::new();
+        for body in [&contact.body, &contact.target_body] {
+            let Some(spec) = self.spec.bodies.iter().find(|b| &b.name == body) else {
+                return false;
+            };
+            if spec.gmsh.is_some() {
+                return false;
+            }
+            for block in &spec.blocks {
+                match names.iter().position(|n| n == &block.material) {
+                    Some(m) => constants.push((self.materials[m].young, self.materials[m].poisson)),
+                    None => return false,
+                }
+            }
+        }
+        constants.windows(2).all(|w| w[0] == w[1])
     }
 
     /// The wear of a fretting run from `[wear]`: the laws, ω and the duration in cycles.

@@ -169,6 +169,14 @@ impl ContactSolver {
         self.n == 0
     }
 
+    /// Replace the plate's generalised load L (N, N·mm; one per rigid unknown): the coupled
+    /// fretting cycle puts the tangential forces' share of the plate's equilibrium there. It
+    /// enters the right-hand side only, so no factorisation changes.
+    pub fn set_load(&mut self, load: &[f64]) {
+        assert_eq!(load.len(), self.m, "one load per rigid unknown");
+        self.load.copy_from_slice(load);
+    }
+
     /// Add the diagonal compliance `compliance` (mm/N, one per point, ≥ 0) to A_s, so that the
     /// solve becomes d = (A_s + diag c) P + R λ + g. The wear step uses it: wear that is
     /// linear in the pressure, Δg_i = c_i P_i, is a compliance in series with the bodies'.

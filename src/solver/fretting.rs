@@ -13,7 +13,9 @@
 //! friction dissipates in it, Σ μ P_i |Δs_i|, is exact; the loop's own area (the trapezoid rule
 //! on its 2n + 1 points) converges to it as the stages are refined, and is reported beside it.
 
+use super::complementarity::{ContactSolution, ContactSolver, Direction, Status};
 use super::partial_slip::{PartialSlip, PartialSlipError, TangentialControl, TangentialProblem};
+use crate::contact::CondensedContact;
 
 /// What drives the cycle.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -131,6 +133,43 @@ impl FrettingCycle {
         term
     }
 
+    /// [`FrettingCycle::sliding_term`] with each stage's slip weighted by its normal force
+    /// against the reference, ((P_k−1 + P_k)/(2 P_ref))ᵇ, so that β̃ P_refᵇ T is the cycle's wear
+    /// Σ β̃ P_kᵇ|Δs|ᵃ Δt^(1−a) where the coupled cycle changes the pressure (`forces`: each
+    /// state's normal forces, N; `reference`: N). A point without reference force gets 0.
+    pub fn weighted_sliding_term(
+        &self,
+        (a, b): (f64, f64),
+        omega: f64,
+        forces: &[Vec<f64>],
+        reference: &[f64],
+    ) -> Vec<f64> {
+        let n = self.slip_amplitude.len();
+        let stage_time = std::f64::consts::PI / (self.stages() as f64 * omega);
+        let mut term = vec![0.0; n];
+        for (k, state) in self.states.iter().enumerate().skip(1) {
+            for i in 0..n {
+                if reference[i] <= 0.0 {
+                    continue;
+                }
+                let ratio = 0.5 * (forces[k - 1][i] + forces[k][i]) / reference[i];
+                let weight = if b == 1.0 {
+                    ratio
+                } else {
+                    ratio.max(0.0).powf(b)
+                };
+                let slip = state.slip[i].abs();
+                term[i] += weight
+                    * if a == 1.0 {
+                        slip
+                    } else {
+                        slip.powf(a) * stage_time.powf(1.0 - a)
+                    };
+            }
+        }
+        term
+    }
+
     /// The x extent (mm) of the points that never slip, from `x` (mm, one per point): None if
     /// every point slips at some instant.
     pub fn stick_extent(&self, x: &[f64]) -> Option<(f64, f64)> {
@@ -144,4 +183,340 @@ impl FrettingCycle {
         let high = inside().fold(f64::NEG_INFINITY, f64::max);
         (low <= high).then_some((low, high))
     }
+}
+
+/// The normal problem's answer to the tangential forces of a coupled cycle.
+pub trait NormalResponse {
+    /// The normal forces P (N, one per point) and the plate's rigid motion λ (mm, rad) when
+    /// body 1 carries the tangential forces `force` (N along +τ).
+    fn respond(&mut self, force: &[f64]) -> Result<(Vec<f64>, Vec<f64>), String>;
+}
+
+/// What couples the normal and the tangential problem.
+pub struct Coupling<'a> {
+    /// A_nt = n_iᵀ G τ_j, mm/N (N × N, row-major).
+    pub a_nt: &'a [f64],
+    /// n_i,x of each point.
+    pub normal_x: &'a [f64],
+    /// τ_i·φ_k(x_i), the tangential displacement per unit rigid motion λ_k (N × m, row-major).
+    pub rigid_tangential: &'a [f64],
+    /// The normal forces (N) and rigid motion after the normal loading.
+    pub initial: (&'a [f64], &'a [f64]),
+}
+
+/// Why a coupled cycle failed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CoupledError {
+    /// The tangential problem failed.
+    #[error("{0}")]
+    Tangential(PartialSlipError),
+    /// The normal solve failed.
+    #[error("the normal solve failed: {0}")]
+    Normal(String),
+    /// The fixed point between the two problems did not converge.
+    #[error("the normal and tangential problems did not agree in {iterations} iterations (the pressure still changed by {change:.3e} of its largest)")]
+    NotConverged {
+        /// Iterations made.
+        iterations: usize,
+        /// Last relative change of the normal forces.
+        change: f64,
+    },
+}
+
+/// Most fixed-point iterations of a coupled stage.
+const COUPLED_ITERATIONS: usize = 200;
+
+/// A coupled stage's agreement: the normal forces' change between iterations, relative to
+/// the largest (the solves' round-off is some 1e-13).
+const COUPLED_TOLERANCE: f64 = 1e-10;
+
+impl FrettingCycle {
+    /// The cycle of the coupled problem: at every stage the tangential forces enter the
+    /// normal problem (the gap −A_nt F, the plate's equilibrium) and the normal forces' change
+    /// enters the tangential one ([`crate::partial_slip::NormalChange`]), iterated to agreement
+    /// (a fixed point: the coupling is of the order μ times Dundurs' β for a half-space pair,
+    /// and the finite bodies' own). `problem` holds A_tt, the tangents and μ; its normal forces
+    /// are replaced stage by stage. `normal_forces` of the result holds each state's.
+    pub fn solve_coupled(
+        problem: &TangentialProblem,
+        coupling: &Coupling,
+        normal: &mut dyn NormalResponse,
+        loading: &FrettingLoading,
+    ) -> Result<(FrettingCycle, Vec<Vec<f64>>), CoupledError> {
+        let n = problem.tangent_x.len();
+        let stages = loading.stages.max(1);
+        let mut pressures: Vec<Vec<f64>> = Vec::with_capacity(2 * stages + 1);
+        let mut current = (coupling.initial.0.to_vec(), coupling.initial.1.to_vec());
+        let peak = coupled_stage(
+            problem,
+            coupling,
+            normal,
+            loading.at(0.0),
+            None,
+            &mut current,
+        )?;
+        let mut states = vec![peak];
+        pressures.push(current.0.clone());
+        let mut half_slip = [vec![0.0; n], vec![0.0; n]];
+        let mut never_slips: Vec<bool> = current.0.iter().map(|&f| f > 0.0).collect();
+        let (mut dissipated, mut loop_area, mut gross_slip) = (0.0, 0.0, false);
+        for stage in 1..=2 * stages {
+            let phase = std::f64::consts::PI * stage as f64 / stages as f64;
+            let previous = states.last().expect("the peak is there").clone();
+            let next = coupled_stage(
+                problem,
+                coupling,
+                normal,
+                loading.at(phase),
+                Some(&previous),
+                &mut current,
+            )?;
+            let half = usize::from(stage > stages);
+            for i in 0..n {
+                half_slip[half][i] += next.slip[i].abs();
+                dissipated -= next.force[i] * next.slip[i];
+                never_slips[i] &= next.stick[i];
+            }
+            loop_area += 0.5 * (next.load + previous.load) * (next.shift - previous.shift);
+            gross_slip |= (0..n).all(|i| current.0[i] <= 0.0 || !next.stick[i]);
+            states.push(next);
+            pressures.push(current.0.clone());
+        }
+        let slip_amplitude = (0..n)
+            .map(|i| half_slip[0][i].max(half_slip[1][i]))
+            .collect();
+        Ok((
+            FrettingCycle {
+                states,
+                dissipated,
+                loop_area,
+                slip_amplitude,
+                never_slips,
+                gross_slip,
+            },
+            pressures,
+        ))
+    }
+}
+
+/// One coupled stage from `from` under `control`; `current` holds the normal forces and the
+/// rigid motion, updated to the stage's end.
+fn coupled_stage(
+    problem: &TangentialProblem,
+    coupling: &Coupling,
+    normal: &mut dyn NormalResponse,
+    control: TangentialControl,
+    from: Option<&PartialSlip>,
+    current: &mut (Vec<f64>, Vec<f64>),
+) -> Result<PartialSlip, CoupledError> {
+    let n = problem.tangent_x.len();
+    let m = coupling.initial.1.len();
+    let mut change = f64::INFINITY;
+    for _ in 0..COUPLED_ITERATIONS {
+        let (force, rigid) = (&current.0, &current.1);
+        let delta: Vec<f64> = (0..n).map(|j| force[j] - coupling.initial.0[j]).collect();
+        let slip: Vec<f64> = (0..n)
+            .map(|i| {
+                let normal_part: f64 = (0..n).map(|j| -coupling.a_nt[j * n + i] * delta[j]).sum();
+                let rigid_part: f64 = (0..m)
+                    .map(|k| {
+                        coupling.rigid_tangential[i * m + k] * (rigid[k] - coupling.initial.1[k])
+                    })
+                    .sum();
+                normal_part + rigid_part
+            })
+            .collect();
+        let x_force = -(0..n).map(|j| coupling.normal_x[j] * delta[j]).sum::<f64>();
+        let stage_problem = TangentialProblem {
+            a_tt: problem.a_tt,
+            tangent_x: problem.tangent_x,
+            normal_force: force,
+            friction: problem.friction,
+            coupling: Some(super::partial_slip::NormalChange {
+                slip: &slip,
+                x_force,
+            }),
+        };
+        let state = stage_problem
+            .solve_stage(control, from)
+            .map_err(CoupledError::Tangential)?;
+        let (next_force, next_rigid) =
+            normal.respond(&state.force).map_err(CoupledError::Normal)?;
+        let largest = next_force.iter().fold(0.0f64, |a, f| a.max(f.abs()));
+        change = (0..n)
+            .map(|i| (next_force[i] - force[i]).abs())
+            .fold(0.0, f64::max)
+            / largest.max(f64::MIN_POSITIVE);
+        *current = (next_force, next_rigid);
+        if change <= COUPLED_TOLERANCE {
+            return Ok(state);
+        }
+    }
+    Err(CoupledError::NotConverged {
+        iterations: COUPLED_ITERATIONS,
+        change,
+    })
+}
+
+/// The periodic cycle of a worn contact, as the fretting run and the final state ask for it:
+/// uncoupled ([`Uncoupled`], the normal forces held) or coupled ([`Coupled`]).
+pub trait CycleModel {
+    /// The cycle at the normal forces `normal_force` (N; those of the frictionless solve of
+    /// worn shape `shape`, mm), with each state's normal forces (N).
+    fn cycle(
+        &mut self,
+        normal_force: &[f64],
+        shape: &[f64],
+    ) -> Result<(FrettingCycle, Vec<Vec<f64>>), CoupledError>;
+}
+
+/// Cattaneo's uncoupled cycle: the normal forces stay those of the normal loading.
+pub struct Uncoupled<'a> {
+    /// A_tt, mm/N.
+    pub a_tt: &'a [f64],
+    /// τ_i,x.
+    pub tangent_x: &'a [f64],
+    /// μ.
+    pub friction: f64,
+    /// The loading.
+    pub loading: FrettingLoading,
+}
+
+impl CycleModel for Uncoupled<'_> {
+    fn cycle(
+        &mut self,
+        normal_force: &[f64],
+        _shape: &[f64],
+    ) -> Result<(FrettingCycle, Vec<Vec<f64>>), CoupledError> {
+        let problem = TangentialProblem {
+            a_tt: self.a_tt,
+            tangent_x: self.tangent_x,
+            normal_force,
+            friction: self.friction,
+            coupling: None,
+        };
+        let cycle =
+            FrettingCycle::solve(&problem, &self.loading).map_err(CoupledError::Tangential)?;
+        let pressures = vec![normal_force.to_vec(); cycle.states.len()];
+        Ok((cycle, pressures))
+    }
+}
+
+/// The coupled cycle on a frictionless contact and its own solver (the run's solver carries
+/// the wear's compliance).
+pub struct Coupled<'a> {
+    /// A_tt, mm/N.
+    pub a_tt: &'a [f64],
+    /// μ.
+    pub friction: f64,
+    /// The loading.
+    pub loading: FrettingLoading,
+    /// The contact, frictionless.
+    pub contact: &'a CondensedContact,
+    /// A frictionless solver of it.
+    pub solver: ContactSolver,
+    /// Normal solves made.
+    pub solves: usize,
+}
+
+impl CycleModel for Coupled<'_> {
+    fn cycle(
+        &mut self,
+        _normal_force: &[f64],
+        shape: &[f64],
+    ) -> Result<(FrettingCycle, Vec<Vec<f64>>), CoupledError> {
+        let c = self.contact;
+        let n = c.len();
+        let tangent_x: Vec<f64> = c.points.tangent.iter().map(|t| t[0]).collect();
+        let normal_x: Vec<f64> = c.points.normal.iter().map(|t| t[0]).collect();
+        let rigid = rigid_tangential(c);
+        let mut response = SolverResponse {
+            solver: &mut self.solver,
+            contact: c,
+            shape,
+            solves: 0,
+        };
+        let initial = response
+            .respond(&vec![0.0; n])
+            .map_err(CoupledError::Normal)?;
+        let problem = TangentialProblem {
+            a_tt: self.a_tt,
+            tangent_x: &tangent_x,
+            normal_force: &initial.0,
+            friction: self.friction,
+            coupling: None,
+        };
+        let coupling = Coupling {
+            a_nt: &c.a_nt,
+            normal_x: &normal_x,
+            rigid_tangential: &rigid,
+            initial: (&initial.0, &initial.1),
+        };
+        let result =
+            FrettingCycle::solve_coupled(&problem, &coupling, &mut response, &self.loading);
+        self.solves += response.solves;
+        result
+    }
+}
+
+/// The frictionless normal solve of a worn contact answering the tangential forces of a
+/// coupled cycle ([`crate::fretting::NormalResponse`]): the gap g₀ + shape − A_nt F, and the
+/// plate's load L + Σ_j (φ_k·τ_j) F_j (the tangential forces' share of its equilibrium).
+pub struct SolverResponse<'a> {
+    /// The frictionless solver.
+    pub solver: &'a mut ContactSolver,
+    /// The contact (frictionless).
+    pub contact: &'a CondensedContact,
+    /// The worn shape, mm.
+    pub shape: &'a [f64],
+    /// Solves made.
+    pub solves: usize,
+}
+
+impl NormalResponse for SolverResponse<'_> {
+    fn respond(&mut self, force: &[f64]) -> Result<(Vec<f64>, Vec<f64>), String> {
+        let c = self.contact;
+        let n = c.len();
+        let gap: Vec<f64> = (0..n)
+            .map(|i| {
+                let tangential: f64 = (0..n).map(|j| c.a_nt[i * n + j] * force[j]).sum();
+                c.points.initial_gap[i] + self.shape[i] - tangential
+            })
+            .collect();
+        let load: Vec<f64> = (c.plate_load.iter().enumerate())
+            .map(|(k, l)| {
+                l + (0..n)
+                    .map(|j| {
+                        let (phi, t) = (c.rigid_modes[k][j], c.points.tangent[j]);
+                        (phi[0] * t[0] + phi[1] * t[1]) * force[j]
+                    })
+                    .sum::<f64>()
+            })
+            .collect();
+        self.solver.set_load(&load);
+        let mut out = ContactSolution::default();
+        let info = self.solver.solve_into(&gap, Direction::Plus, &mut out);
+        self.solves += 1;
+        if info.status != Status::Solved {
+            return Err(format!(
+                "complementarity residual {:.3e}, equilibrium residual {:.3e}",
+                info.complementarity, info.equilibrium
+            ));
+        }
+        Ok((out.force.clone(), out.rigid.clone()))
+    }
+}
+
+/// τ_i·φ_k(x_i) of `contact` (N × m, row-major): the tangential displacement of each point per
+/// unit rigid motion of the plate.
+pub fn rigid_tangential(contact: &CondensedContact) -> Vec<f64> {
+    let (n, m) = (contact.len(), contact.rigid_modes.len());
+    let mut r = vec![0.0; n * m];
+    for i in 0..n {
+        for k in 0..m {
+            let (phi, t) = (contact.rigid_modes[k][i], contact.points.tangent[i]);
+            r[i * m + k] = phi[0] * t[0] + phi[1] * t[1];
+        }
+    }
+    r
 }

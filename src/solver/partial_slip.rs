@@ -43,6 +43,9 @@ pub struct PartialSlip {
     pub slip: Vec<f64>,
     /// The plate's rigid shift along x, mm.
     pub shift: f64,
+    /// Body 1's tangential displacement against body 2 at each point at the stage's end, mm,
+    /// from the normally loaded state: the next stage's slip is measured from it.
+    pub displacement: Vec<f64>,
     /// The tangential force on body 1's plate, N along +x (−Σ F_j τ_j,x: the load itself under
     /// force control, what the shift needs under displacement control).
     pub load: f64,
@@ -93,6 +96,20 @@ pub struct TangentialProblem<'a> {
     pub normal_force: &'a [f64],
     /// Coulomb's μ.
     pub friction: f64,
+    /// What the normal forces' change since the normal loading adds (the coupled problem of
+    /// [`crate::fretting`]); None: nothing (Cattaneo's uncoupled problem).
+    pub coupling: Option<NormalChange<'a>>,
+}
+
+/// What a change of the normal forces and of the plate's rigid motion since the normal loading
+/// does to the tangential problem: a slip at every point and a force along x on body 1.
+#[derive(Clone, Copy, Debug)]
+pub struct NormalChange<'a> {
+    /// Body 1's tangential displacement against body 2 at each point, mm: −Σ_j A_nt,ji ΔP_j
+    /// (body 1 carries −n_j ΔP_j) plus τ_i·φ_k Δλ_k of the plate's rigid motion.
+    pub slip: &'a [f64],
+    /// The x force the normal forces' change puts on body 1, −Σ n_j,x ΔP_j, N.
+    pub x_force: f64,
 }
 
 /// Most active-set iterations: each moves at least one point, and a loading from rest moves
@@ -136,7 +153,7 @@ impl TangentialProblem<'_> {
         // The relative tangential displacement the previous state had: a stage's slip is
         // measured from it.
         let base = match from {
-            Some(state) => self.displacement(&state.force, state.shift),
+            Some(state) => state.displacement.clone(),
             None => vec![0.0; n],
         };
         let loaded: Vec<usize> = (0..n).filter(|&i| self.normal_force[i] > 0.0).collect();
@@ -213,12 +230,15 @@ impl TangentialProblem<'_> {
                     .iter()
                     .zip(self.tangent_x)
                     .map(|(f, t)| f * t)
-                    .sum::<f64>();
+                    .sum::<f64>()
+                    - self.coupling.map_or(0.0, |c| c.x_force);
+                let displacement = self.displacement(&force, shift);
                 return Ok(PartialSlip {
                     force,
                     stick,
                     slip,
                     shift,
+                    displacement,
                     load,
                     iterations: iteration,
                 });
@@ -237,7 +257,8 @@ impl TangentialProblem<'_> {
             .map(|i| {
                 let row = &self.a_tt[i * n..(i + 1) * n];
                 let tangential: f64 = row.iter().zip(force).map(|(a, f)| a * f).sum();
-                tangential + shift * self.tangent_x[i]
+                let coupled = self.coupling.map_or(0.0, |c| c.slip[i]);
+                tangential + shift * self.tangent_x[i] + coupled
             })
             .collect()
     }
@@ -274,7 +295,7 @@ impl TangentialProblem<'_> {
                 .filter(|&j| !sticks[j])
                 .map(|j| self.a_tt[i * n + j] * force[j])
                 .sum();
-            rhs[r] = base[i] - fixed;
+            rhs[r] = base[i] - fixed - self.coupling.map_or(0.0, |c| c.slip[i]);
             if force_control {
                 matrix[r * m + m - 1] = self.tangent_x[i];
             } else {
@@ -290,7 +311,7 @@ impl TangentialProblem<'_> {
                 .filter(|&j| !sticks[j])
                 .map(|j| force[j] * self.tangent_x[j])
                 .sum();
-            rhs[m - 1] = -load - slipping;
+            rhs[m - 1] = -load - slipping - self.coupling.map_or(0.0, |c| c.x_force);
         }
         if !lu.factor_in_place() {
             return None;

@@ -17,8 +17,7 @@
 
 use crate::complementarity::{ContactSolution, ContactSolver, Direction, Status};
 use crate::contact::CondensedContact;
-use crate::fretting::{FrettingCycle, FrettingLoading};
-use crate::partial_slip::{PartialSlipError, TangentialProblem};
+use crate::fretting::{CoupledError, CycleModel, FrettingCycle};
 
 /// The final state.
 #[derive(Clone, Debug)]
@@ -45,9 +44,9 @@ pub enum FinalStateError {
     /// A contact solve failed.
     #[error("a contact solve failed (complementarity residual {0:.3e})")]
     ContactSolve(f64),
-    /// The tangential problem failed.
+    /// The cycle failed.
     #[error("{0}")]
-    Tangential(PartialSlipError),
+    Cycle(CoupledError),
     /// Nothing sticks: gross slip, whose steady state is the periodic one of full slip.
     #[error("no point sticks through the cycle: that is gross slip, whose worn state is the periodic one of full slip, not a final state of partial slip")]
     GrossSlip,
@@ -59,27 +58,22 @@ pub enum FinalStateError {
 /// Most fixed-point iterations on S.
 const MAX_ITERATIONS: usize = 50;
 
-/// The final state of `contact` (a frictionless solver `solver` on it) under `loading` with
-/// tangential flexibility `a_tt` and friction `friction`.
+/// The final state of `contact` (a frictionless solver `solver` on it) with the cycles of
+/// `model`. In the coupled problem the points of S must stick at every instant of the cycle,
+/// whose pressure moves: the fixed point on S sees that through the cycle.
 pub fn final_state(
     solver: &mut ContactSolver,
     contact: &CondensedContact,
-    a_tt: &[f64],
-    friction: f64,
-    loading: &FrettingLoading,
+    model: &mut dyn CycleModel,
 ) -> Result<FrettingFinalState, FinalStateError> {
     let n = contact.len();
     let area = contact.areas();
-    let tangent_x: Vec<f64> = contact.points.tangent.iter().map(|t| t[0]).collect();
-    let cycle_of = |pressure: &[f64]| {
+    let mut cycle_of = |pressure: &[f64], shape: &[f64]| {
         let normal_force: Vec<f64> = pressure.iter().zip(&area).map(|(p, a)| p * a).collect();
-        let problem = TangentialProblem {
-            a_tt,
-            tangent_x: &tangent_x,
-            normal_force: &normal_force,
-            friction,
-        };
-        FrettingCycle::solve(&problem, loading).map_err(FinalStateError::Tangential)
+        model
+            .cycle(&normal_force, shape)
+            .map(|(cycle, _)| cycle)
+            .map_err(FinalStateError::Cycle)
     };
     solver.set_compliance(&vec![0.0; n]);
     let g0 = &contact.points.initial_gap;
@@ -89,7 +83,7 @@ pub fn final_state(
         return Err(FinalStateError::ContactSolve(info.complementarity));
     }
     let initial_pressure = out.pressure.clone();
-    let first_cycle = cycle_of(&initial_pressure)?;
+    let first_cycle = cycle_of(&initial_pressure, &vec![0.0; n])?;
     let mut stick: Vec<bool> = (0..n)
         .map(|i| initial_pressure[i] > 0.0 && first_cycle.never_slips[i])
         .collect();
@@ -121,7 +115,7 @@ pub fn final_state(
             })
             .collect();
         let pressure = out.pressure.clone();
-        let cycle = cycle_of(&pressure)?;
+        let cycle = cycle_of(&pressure, &shape)?;
         let slipping: Vec<usize> = (0..n)
             .filter(|&i| pressure[i] > 0.0 && !cycle.never_slips[i])
             .collect();

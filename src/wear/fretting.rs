@@ -4,7 +4,8 @@
 //! A step takes the contact from its worn shape g through k cycles:
 //!
 //! 1. The cycle at the step's start (its pressure p): each point's ∫|ṡ|ᵃ dt over a cycle,
-//!    T_i ([`FrettingCycle::sliding_term`]), zero where the point sticks.
+//!    T_i ([`FrettingCycle::weighted_sliding_term`]: each stage's slip weighted by its normal
+//!    force against the step's where a coupled cycle changes it), zero where the point sticks.
 //! 2. The implicit step g⁺ = g + k Σ_l β̃_l T_l,i p⁺_iᵇˡ with the pressure p⁺ of the worn
 //!    shape g⁺, solved as one contact problem with the wear as a compliance in series with
 //!    the bodies' (b = 1), or by Newton's method on the linearised wear (b ≠ 1) as the
@@ -23,18 +24,11 @@
 
 use crate::complementarity::{ContactSolution, ContactSolver, Direction, Status};
 use crate::contact::CondensedContact;
-use crate::fretting::{FrettingCycle, FrettingLoading};
-use crate::partial_slip::{PartialSlipError, TangentialProblem};
+use crate::fretting::{CoupledError, CycleModel, FrettingCycle};
 use crate::wear::{law, WearLaw};
 
 /// What a fretting run needs beyond the contact.
 pub struct FrettingWearInput<'a> {
-    /// A_tt, mm/N.
-    pub a_tt: &'a [f64],
-    /// The tangential loading.
-    pub loading: FrettingLoading,
-    /// Coulomb's μ.
-    pub friction: f64,
     /// Each wearing body (0, 1) and its law.
     pub laws: &'a [(usize, WearLaw)],
     /// Angular frequency of the cycle, rad/s.
@@ -104,9 +98,9 @@ pub enum FrettingStop {
         /// Residual of the plate's equilibrium.
         equilibrium: f64,
     },
-    /// The tangential problem failed.
-    #[error("the tangential problem failed: {0}")]
-    Tangential(PartialSlipError),
+    /// The cycle failed.
+    #[error("the fretting cycle failed: {0}")]
+    Cycle(CoupledError),
     /// Newton's method of an implicit step (b ≠ 1) did not converge.
     #[error("Newton's method of the implicit step did not converge in {iterations} iterations (linearisation error {error:.3e} of the largest wear)")]
     Newton {
@@ -145,6 +139,8 @@ struct State {
     wear: [Vec<f64>; 2],
     pressure: Vec<f64>,
     cycle: FrettingCycle,
+    /// Each state's normal forces through the cycle, N.
+    cycle_forces: Vec<Vec<f64>>,
 }
 
 /// A fretting run on `contact` (whose solve `solver` is frictionless: the normal load is
@@ -152,22 +148,23 @@ struct State {
 pub fn run(
     solver: &mut ContactSolver,
     contact: &CondensedContact,
+    model: &mut dyn CycleModel,
     input: &FrettingWearInput,
     mut on_step: impl FnMut(&FrettingStep),
 ) -> Result<FrettingHistory, FrettingStop> {
     let n = contact.len();
     let area = contact.areas();
     let x: Vec<f64> = contact.points.x.iter().map(|p| p[0]).collect();
-    let tangent_x: Vec<f64> = contact.points.tangent.iter().map(|t| t[0]).collect();
     let mut solves = 0;
     let shape = vec![0.0; n];
     let pressure = normal_solve(solver, contact, &shape, &mut solves)?;
-    let cycle = cycle_at(input, &tangent_x, &pressure, &area)?;
+    let (cycle, cycle_forces) = cycle_at(model, &pressure, &shape, &area)?;
     let mut state = State {
         shape,
         wear: [vec![0.0; n], vec![0.0; n]],
         pressure,
         cycle,
+        cycle_forces,
     };
     let mut history = FrettingHistory {
         steps: vec![],
@@ -202,8 +199,12 @@ pub fn run(
             let jump = k.min(limit - done).max(1.0);
             let attempt = (|| {
                 let next = implicit_step(solver, contact, input, &state, jump, &area, &mut solves)?;
-                let cycle = cycle_at(input, &tangent_x, &next.pressure, &area)?;
-                Ok::<_, FrettingStop>(State { cycle, ..next })
+                let (cycle, cycle_forces) = cycle_at(model, &next.pressure, &next.shape, &area)?;
+                Ok::<_, FrettingStop>(State {
+                    cycle,
+                    cycle_forces,
+                    ..next
+                })
             })();
             let next = match attempt {
                 Ok(next) => next,
@@ -215,7 +216,7 @@ pub fn run(
                     return Ok(history);
                 }
             };
-            let error = jump_error(input, &state, &next, jump);
+            let error = jump_error(input, (&state, &next), &area, jump);
             let factor = if error > 0.0 {
                 (0.9 * (input.tolerance / error).sqrt()).clamp(0.2, 2.0)
             } else {
@@ -298,31 +299,39 @@ fn normal_solve(
     Ok(out.pressure)
 }
 
-/// The periodic cycle under pressure `pressure` (MPa).
+/// The periodic cycle of worn shape `shape` at pressure `pressure` (MPa).
 fn cycle_at(
-    input: &FrettingWearInput,
-    tangent_x: &[f64],
+    model: &mut dyn CycleModel,
     pressure: &[f64],
+    shape: &[f64],
     area: &[f64],
-) -> Result<FrettingCycle, FrettingStop> {
+) -> Result<(FrettingCycle, Vec<Vec<f64>>), FrettingStop> {
     let normal_force: Vec<f64> = pressure.iter().zip(area).map(|(p, a)| p * a).collect();
-    let problem = TangentialProblem {
-        a_tt: input.a_tt,
-        tangent_x,
-        normal_force: &normal_force,
-        friction: input.friction,
-    };
-    FrettingCycle::solve(&problem, &input.loading).map_err(FrettingStop::Tangential)
+    model
+        .cycle(&normal_force, shape)
+        .map_err(FrettingStop::Cycle)
 }
 
-/// Each law's wear per cycle at each point as (c, b) pairs over `jump` cycles, from the
-/// cycle's slip: c = jump β̃ T_i.
-fn step_terms(input: &FrettingWearInput, cycle: &FrettingCycle, jump: f64) -> Vec<Vec<f64>> {
+/// Each law's wear per cycle at each point over `jump` cycles, as the coefficient c of
+/// W = c pᵇ at the state's own pressure: c = jump β̃ T_i, the slip weighted by the cycle's
+/// normal forces against the state's.
+fn step_terms(input: &FrettingWearInput, state: &State, area: &[f64], jump: f64) -> Vec<Vec<f64>> {
+    let reference: Vec<f64> = state
+        .pressure
+        .iter()
+        .zip(area)
+        .map(|(p, a)| p * a)
+        .collect();
     input
         .laws
         .iter()
         .map(|(_, l)| {
-            let term = cycle.sliding_term(l.a, input.omega);
+            let term = state.cycle.weighted_sliding_term(
+                (l.a, l.b),
+                input.omega,
+                &state.cycle_forces,
+                &reference,
+            );
             term.iter().map(|t| jump * l.beta * t).collect()
         })
         .collect()
@@ -339,7 +348,7 @@ fn implicit_step(
     solves: &mut usize,
 ) -> Result<State, FrettingStop> {
     let n = contact.len();
-    let coefficients = step_terms(input, &state.cycle, jump);
+    let coefficients = step_terms(input, state, area, jump);
     let terms_at = |i: usize| -> Vec<(f64, f64)> {
         (input.laws.iter().zip(&coefficients))
             .map(|((_, l), c)| (c[i], l.b))
@@ -409,6 +418,7 @@ fn implicit_step(
                 wear: next_wear,
                 pressure: out.pressure.clone(),
                 cycle: state.cycle.clone(),
+                cycle_forces: state.cycle_forces.clone(),
             });
         }
         for i in 0..n {
@@ -435,9 +445,16 @@ fn implicit_step(
 
 /// The jump's local error estimate, relative to its largest wear: half the change of the
 /// wear increment between the terms of the step's start and of its end, at the end pressure.
-fn jump_error(input: &FrettingWearInput, start: &State, end: &State, jump: f64) -> f64 {
-    let before = step_terms(input, &start.cycle, jump);
-    let after = step_terms(input, &end.cycle, jump);
+fn jump_error(
+    input: &FrettingWearInput,
+    (start, end): (&State, &State),
+    area: &[f64],
+    jump: f64,
+) -> f64 {
+    // The start's slip terms (weighted against the start's own pressure) and the end's, both
+    // taken at the end's pressure.
+    let before = step_terms(input, start, area, jump);
+    let after = step_terms(input, end, area, jump);
     let n = end.pressure.len();
     let (mut largest, mut error) = (0.0f64, 0.0f64);
     for i in 0..n {

@@ -38,6 +38,7 @@ pub fn cycle_energy(checks: &mut Checks) -> Outcome {
         tangent_x: &tangent_x,
         normal_force: &force,
         friction,
+        coupling: None,
     };
     let total: f64 = force.iter().sum();
     let loading = FrettingLoading {

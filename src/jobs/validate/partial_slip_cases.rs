@@ -35,6 +35,7 @@ pub fn cattaneo(checks: &mut Checks) -> Outcome {
         tangent_x: &tangent_x,
         normal_force: &force,
         friction,
+        coupling: None,
     };
     let total: f64 = force.iter().sum();
     let (peak, back) = (0.6, 0.2);
