@@ -312,6 +312,24 @@ impl PyProblem {
         out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
     }
 
+    /// A fretting problem's jobs (`[fretting]`): `job` is "contact", "run" or "steady";
+    /// summary JSON text. A run that stopped (a failed solve) is raised with its reason.
+    fn _fretting(&self, py: Python<'_>, job: &str, cycles: Option<f64>) -> PyResult<String> {
+        let p = self.model(py)?;
+        let out = py.allow_threads(|| match job {
+            "contact" => wearfem::jobs::fretting::contact(p).map(|r| r.summary(p)),
+            "run" => {
+                let run = wearfem::jobs::fretting::run(p, cycles, |_| {})?;
+                if let Some((step, reason)) = &run.history.stopped {
+                    return Err(JobError::Compute(format!("step {step}: {reason}")));
+                }
+                Ok(run.summary(p))
+            }
+            _ => wearfem::jobs::fretting::steady(p).map(|r| r.summary(p)),
+        });
+        out.map(|v| v.to_string()).map_err(|e| job_error(py, &e))
+    }
+
     /// Steady state: summary JSON text, with "probes" (name → contact point index) added.
     fn _steady(&self, py: Python<'_>) -> PyResult<String> {
         let p = self.model(py)?;

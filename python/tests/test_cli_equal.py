@@ -103,3 +103,28 @@ def test_overrides_equal_cli_set(cli):
     assert proc.returncode == 0, proc.stderr
     p = wearfem.Problem.builtin("punch-b40").with_overrides({"contact.friction": 0.2, "plate.pin": [1000, 120]})
     close(json.loads((out / "summary.json").read_text()), p.steady().summary)
+
+
+@pytest.mark.parametrize("job", ["contact", "steady"])
+def test_fretting_equals_cli(job, cli):
+    proc, out = cli(job, "fretting-cylinder")
+    assert proc.returncode == 0, proc.stderr
+    problem = wearfem.Problem.builtin("fretting-cylinder")
+    ours = problem.fretting_contact() if job == "contact" else problem.fretting_steady()
+    close(json.loads((out / "summary.json").read_text()), ours)
+
+
+def test_fretting_run_equals_cli(cli):
+    proc, out = cli("run", "fretting-cylinder", "--set", "wear.cycles=1000", "--set", "wear.record_cycles=[]")
+    assert proc.returncode == 0, proc.stderr
+    ours = wearfem.Problem.builtin("fretting-cylinder").with_overrides({"wear.record_cycles": []}).fretting_run(cycles=1000)
+    close(json.loads((out / "summary.json").read_text()), ours)
+    # Nothing wears where the points stick through the cycle.
+    final = ours["final"]
+    assert all(w == 0.0 for w, s in zip(final["worn_depth"], final["sticks"]) if s)
+
+
+def test_fretting_problem_refuses_the_full_slip_jobs():
+    with pytest.raises(wearfem.WearfemError) as e:
+        wearfem.Problem.builtin("fretting-cylinder").contact()
+    assert "fretting" in str(e.value)

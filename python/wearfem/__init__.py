@@ -446,6 +446,26 @@ class Problem:
                 raise ValueError(f"steps must be a positive integer, got {steps}")
         return json.loads(self._inner._run_sliding(steps))
 
+    def fretting_contact(self) -> dict:
+        """A fretting problem's (``[fretting]``) normal load and one periodic cycle
+        (``wearfem contact`` on it): summary.json as a dict (docs/fretting.md: ``fretting``
+        with the loop's figures and the stick zone; profiles ``x``, ``pressure``,
+        ``shear_at_peak``, ``sticks``, ``slip_amplitude``)."""
+        return json.loads(self._inner._fretting("contact", None))
+
+    def fretting_run(self, cycles: Optional[float] = None) -> dict:
+        """A fretting problem's wear by the local slip (``wearfem run`` on it), ``cycles``
+        replacing ``wear.cycles``: summary.json as a dict (``final`` holds the profiles). A run
+        that stops on a failed solve raises RuntimeError with its reason."""
+        if cycles is not None and not (cycles >= 1):
+            raise ValueError(f"cycles must be at least 1, got {cycles}")
+        return json.loads(self._inner._fretting("run", None if cycles is None else float(cycles)))
+
+    def fretting_steady(self) -> dict:
+        """A fretting problem's final state of partial slip (``wearfem steady`` on it):
+        summary.json as a dict (``pressure``, ``worn_depth``, ``in_final_stick_set``)."""
+        return json.loads(self._inner._fretting("steady", None))
+
     def steady(self, method: str = "exact") -> SteadyResult:
         """Steady worn state computed directly (``wearfem steady``).
 

@@ -15,7 +15,9 @@ use crate::fretting::{
 use crate::fretting_input::FrettingSettings;
 use crate::partial_slip::PartialSlipError;
 use crate::problem::{Problem, ProblemError};
+use crate::report::json::{number, numbers};
 use crate::wear::fretting::{FrettingHistory, FrettingStep, FrettingStop, FrettingWearInput};
+use serde_json::{json, Value};
 use std::time::Instant;
 
 /// Whether `problem` is a fretting problem (it has a `[fretting]` section).
@@ -259,4 +261,118 @@ pub fn steady(problem: &Problem) -> Result<FrettingSteady, JobError> {
         state,
         seconds: start.elapsed().as_secs_f64(),
     })
+}
+
+/// What summary.json says of the loading and a cycle.
+pub fn cycle_json(setup: &FrettingSetup, cycle: &FrettingCycle) -> Value {
+    let loading = &setup.settings.loading;
+    let x = setup.x();
+    json!({
+        "loading": match loading.control { FrettingControl::Force => "force", FrettingControl::Displacement => "displacement" },
+        "amplitude": number(loading.amplitude),
+        "amplitude_unit": match loading.control { FrettingControl::Force => "N", FrettingControl::Displacement => "mm" },
+        "stages_per_half_cycle": loading.stages,
+        "friction": number(setup.settings.friction),
+        "peak_load_N": number(cycle.states[0].load),
+        "peak_shift_mm": number(cycle.states[0].shift),
+        "dissipated_per_cycle_Nmm": number(cycle.dissipated),
+        "loop_area_Nmm": number(cycle.loop_area),
+        "stick_zone_mm": cycle.stick_extent(&x).map(|(a, b)| json!([number(a), number(b)])),
+        "gross_slip": cycle.gross_slip,
+    })
+}
+
+impl FrettingContact {
+    /// What `wearfem contact` writes as summary.json (and Python's `fretting_contact`
+    /// returns): the cycle's figures and the profiles along the contact (x mm, the normal
+    /// loading's pressure MPa, the shear at the peak MPa, whether each point sticks, its slip
+    /// in a half cycle mm).
+    pub fn summary(&self, problem: &Problem) -> Value {
+        let setup = &self.setup;
+        let peak = &self.cycle.states[0];
+        let shear: Vec<f64> = (peak.force.iter().zip(&setup.area))
+            .map(|(f, a)| f / a)
+            .collect();
+        json!({
+            "title": problem.spec.title,
+            "wearfem_version": crate::VERSION,
+            "points": setup.contact.len(),
+            "coupled": setup.settings.coupled,
+            "peak_pressure_MPa": number(self.normal.pressure.iter().fold(0.0f64, |m, p| m.max(*p))),
+            "friction_limit_N": number(self.limit),
+            "fretting": cycle_json(setup, &self.cycle),
+            "x": numbers(&setup.x()),
+            "pressure": numbers(&self.normal.pressure),
+            "shear_at_peak": numbers(&shear),
+            "sticks": self.cycle.never_slips,
+            "slip_amplitude": numbers(&self.cycle.slip_amplitude),
+            "setup_seconds": setup.seconds,
+            "seconds": self.seconds,
+            "warnings": [],
+        })
+    }
+}
+
+impl FrettingRun {
+    /// What `wearfem run` writes as summary.json (and Python's `fretting_run` returns), with
+    /// the final profiles (x mm, pressure MPa, worn depth mm, each body's wear mm).
+    pub fn summary(&self, problem: &Problem) -> Value {
+        let h = &self.history;
+        let setup = &self.setup;
+        let last = h.steps.last();
+        let end = h.records.last();
+        json!({
+            "title": problem.spec.title,
+            "wearfem_version": crate::VERSION,
+            "points": setup.contact.len(),
+            "cycles": last.map_or(0.0, |s| s.cycles),
+            "steps": h.steps.len(),
+            "solves": h.solves,
+            "wear_stopped_at_cycle": h.wear_stopped,
+            "stopped": h.stopped.as_ref().map(|(step, why)| json!({"step": step, "reason": why.to_string()})),
+            "first_cycle": cycle_json(setup, &h.first_cycle),
+            "last_cycle": cycle_json(setup, &h.last_cycle),
+            "deepest_wear_mm": last.map(|s| numbers(&s.deepest_wear)),
+            "final": end.map(|r| json!({
+                "cycles": r.cycles,
+                "x": numbers(&setup.x()),
+                "pressure": numbers(&r.pressure),
+                "worn_depth": numbers(&r.shape),
+                "wear_body1": numbers(&r.wear[0]),
+                "wear_body2": numbers(&r.wear[1]),
+                "sticks": r.never_slips,
+            })),
+            "setup_seconds": setup.seconds,
+            "seconds": self.seconds,
+            "warnings": [],
+        })
+    }
+}
+
+impl FrettingSteady {
+    /// What `wearfem steady` writes as summary.json (and Python's `fretting_steady` returns),
+    /// with the final state's profiles (x mm, pressure MPa, worn depth mm, the stick set).
+    pub fn summary(&self, problem: &Problem) -> Value {
+        let s = &self.state;
+        let setup = &self.setup;
+        json!({
+            "title": problem.spec.title,
+            "wearfem_version": crate::VERSION,
+            "status": "final_state",
+            "points": setup.contact.len(),
+            "iterations": s.iterations,
+            "peak_pressure_MPa": number(s.pressure.iter().fold(0.0f64, |m, p| m.max(*p))),
+            "deepest_wear_mm": number(s.shape.iter().fold(0.0f64, |m, w| m.max(*w))),
+            "first_cycle": cycle_json(setup, &s.first_cycle),
+            "final_cycle": cycle_json(setup, &s.cycle),
+            "x": numbers(&setup.x()),
+            "initial_pressure": numbers(&s.initial_pressure),
+            "pressure": numbers(&s.pressure),
+            "worn_depth": numbers(&s.shape),
+            "in_final_stick_set": s.stick,
+            "setup_seconds": setup.seconds,
+            "seconds": self.seconds,
+            "warnings": [],
+        })
+    }
 }

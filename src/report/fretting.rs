@@ -10,12 +10,12 @@
 //!   loop.
 //! - `steady`: summary.json, final.csv and the figures final (pressure) and scar.
 
-use crate::fretting::{FrettingControl, FrettingCycle};
-use crate::jobs::fretting::{FrettingContact, FrettingRun, FrettingSetup, FrettingSteady};
+use crate::fretting::FrettingCycle;
+use crate::jobs::fretting::{FrettingContact, FrettingRun, FrettingSteady};
 use crate::output::{write_csv, write_json, OutputError};
 use crate::plot::{line_plot, problem_name, Series};
 use crate::problem::Problem;
-use crate::report::json::{number, numbers};
+use crate::report::json::number;
 use serde_json::{json, Value};
 use std::path::Path;
 
@@ -24,25 +24,6 @@ fn figure_error(dir: &Path) -> impl Fn(String) -> OutputError + '_ {
         path: dir.display().to_string(),
         source: std::io::Error::other(e),
     }
-}
-
-/// What summary.json says of the loading and the cycle.
-fn cycle_json(setup: &FrettingSetup, cycle: &FrettingCycle) -> Value {
-    let loading = &setup.settings.loading;
-    let x = setup.x();
-    json!({
-        "loading": match loading.control { FrettingControl::Force => "force", FrettingControl::Displacement => "displacement" },
-        "amplitude": number(loading.amplitude),
-        "amplitude_unit": match loading.control { FrettingControl::Force => "N", FrettingControl::Displacement => "mm" },
-        "stages_per_half_cycle": loading.stages,
-        "friction": number(setup.settings.friction),
-        "peak_load_N": number(cycle.states[0].load),
-        "peak_shift_mm": number(cycle.states[0].shift),
-        "dissipated_per_cycle_Nmm": number(cycle.dissipated),
-        "loop_area_Nmm": number(cycle.loop_area),
-        "stick_zone_mm": cycle.stick_extent(&x).map(|(a, b)| json!([number(a), number(b)])),
-        "gross_slip": cycle.gross_slip,
-    })
 }
 
 fn loop_rows(cycle: &FrettingCycle, label: &str) -> Vec<Vec<Value>> {
@@ -79,17 +60,7 @@ pub fn write_contact(
     let setup = &result.setup;
     let cycle = &result.cycle;
     let x = setup.x();
-    let mut summary = json!({
-        "title": problem.spec.title,
-        "wearfem_version": crate::VERSION,
-        "points": x.len(),
-        "peak_pressure_MPa": number(result.normal.pressure.iter().fold(0.0f64, |m, p| m.max(*p))),
-        "friction_limit_N": number(result.limit),
-        "fretting": cycle_json(setup, cycle),
-        "setup_seconds": setup.seconds,
-        "seconds": result.seconds,
-    });
-    summary["warnings"] = json!([]);
+    let summary = result.summary(problem);
     write_json(dir, "summary.json", &summary)?;
     let n = x.len();
     let quarter = cycle.stages() / 2;
@@ -182,23 +153,7 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &FrettingRun) -> Result<(),
     let h = &run.history;
     let setup = &run.setup;
     let x = setup.x();
-    let last = h.steps.last();
-    let summary = json!({
-        "title": problem.spec.title,
-        "wearfem_version": crate::VERSION,
-        "points": x.len(),
-        "cycles": last.map_or(0.0, |s| s.cycles),
-        "steps": h.steps.len(),
-        "solves": h.solves,
-        "wear_stopped_at_cycle": h.wear_stopped,
-        "stopped": h.stopped.as_ref().map(|(step, why)| json!({"step": step, "reason": why.to_string()})),
-        "first_cycle": cycle_json(setup, &h.first_cycle),
-        "last_cycle": cycle_json(setup, &h.last_cycle),
-        "deepest_wear_mm": last.map(|s| numbers(&s.deepest_wear)),
-        "setup_seconds": setup.seconds,
-        "seconds": run.seconds,
-        "warnings": [],
-    });
+    let summary = run.summary(problem);
     write_json(dir, "summary.json", &summary)?;
     let rows: Vec<Vec<Value>> = h
         .steps
@@ -385,20 +340,7 @@ pub fn write_steady(
     let s = &result.state;
     let setup = &result.setup;
     let x = setup.x();
-    let summary = json!({
-        "title": problem.spec.title,
-        "wearfem_version": crate::VERSION,
-        "status": "final_state",
-        "points": x.len(),
-        "iterations": s.iterations,
-        "peak_pressure_MPa": number(s.pressure.iter().fold(0.0f64, |m, p| m.max(*p))),
-        "deepest_wear_mm": number(s.shape.iter().fold(0.0f64, |m, w| m.max(*w))),
-        "first_cycle": cycle_json(setup, &s.first_cycle),
-        "final_cycle": cycle_json(setup, &s.cycle),
-        "setup_seconds": setup.seconds,
-        "seconds": result.seconds,
-        "warnings": [],
-    });
+    let summary = result.summary(problem);
     write_json(dir, "summary.json", &summary)?;
     let rows: Vec<Vec<Value>> = (0..x.len())
         .map(|i| {
