@@ -131,6 +131,9 @@ pub fn contact(problem: &Problem) -> Result<FrettingContact, JobError> {
     if info.status != Status::Solved {
         return Err(JobError::Compute(format!("the normal contact solve did not converge (complementarity residual {:.3e}, equilibrium residual {:.3e}); nothing was written", info.complementarity, info.equilibrium)));
     }
+    if normal.pressure.iter().all(|p| *p <= 0.0) {
+        return Err(no_contact(problem));
+    }
     let normal_force: Vec<f64> = (normal.pressure.iter().zip(&setup.area))
         .map(|(p, a)| p * a)
         .collect();
@@ -165,6 +168,13 @@ fn cycle_error(problem: &Problem, settings: &FrettingSettings, error: CoupledErr
         ) => JobError::Problem(gross_slip_error(problem, *load, *limit)),
         _ => JobError::Compute(format!("the fretting cycle: {error}; nothing was written")),
     }
+}
+
+/// No contact under the normal load: the problem presses nothing (bad input, exit 2).
+fn no_contact(problem: &Problem) -> JobError {
+    problem
+        .error("fretting", FrettingStop::NoContact.to_string())
+        .into()
 }
 
 fn gross_slip_error(problem: &Problem, load: f64, limit: f64) -> ProblemError {
@@ -251,6 +261,7 @@ pub fn steady(problem: &Problem) -> Result<FrettingSteady, JobError> {
     let state = final_state(&mut solver, &setup.contact, model.as_mut())
     .map_err(|e| match e {
         FinalStateError::Cycle(e) => cycle_error(problem, &setup.settings, e),
+        FinalStateError::NoContact => no_contact(problem),
         FinalStateError::GrossSlip => JobError::Problem(problem.error("fretting.amplitude", format!("{}: `wearfem run` integrates it (a steady state of gross-slip fretting is not built yet)", FinalStateError::GrossSlip))),
         other => JobError::Compute(format!("the final state: {other}; nothing was written")),
     });

@@ -50,6 +50,9 @@ pub enum FinalStateError {
     /// Nothing sticks: gross slip, whose steady state is the periodic one of full slip.
     #[error("no point sticks through the cycle: that is gross slip, whose worn state is the periodic one of full slip, not a final state of partial slip")]
     GrossSlip,
+    /// No point carries pressure under the normal load.
+    #[error("no contact point carries pressure under the normal load: nothing frets (a held plate presses only by its position; check the loads, the plate and the initial gap)")]
+    NoContact,
     /// The stick set kept changing.
     #[error("the stick set did not settle in {0} iterations")]
     NotSettled(usize),
@@ -83,6 +86,9 @@ pub fn final_state(
         return Err(FinalStateError::ContactSolve(info.complementarity));
     }
     let initial_pressure = out.pressure.clone();
+    if initial_pressure.iter().all(|p| *p <= 0.0) {
+        return Err(FinalStateError::NoContact);
+    }
     let first_cycle = cycle_of(&initial_pressure, &vec![0.0; n])?;
     let mut stick: Vec<bool> = (0..n)
         .map(|i| initial_pressure[i] > 0.0 && first_cycle.never_slips[i])
