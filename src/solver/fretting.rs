@@ -72,19 +72,38 @@ impl FrettingCycle {
         problem: &TangentialProblem,
         loading: &FrettingLoading,
     ) -> Result<FrettingCycle, PartialSlipError> {
-        let n = problem.normal_force.len();
+        let (cycle, _) = Self::run_stages(loading, |control, from| {
+            let state = problem.solve_stage(control, from)?;
+            Ok((state, problem.normal_force.to_vec()))
+        })?;
+        Ok(cycle)
+    }
+
+    /// The virgin loading to the peak and the 2n stages after it, `stage` solving one from
+    /// the state before (None: the unloaded state) and giving the normal forces (N) at its
+    /// end; with each state's normal forces.
+    fn run_stages<E>(
+        loading: &FrettingLoading,
+        mut stage: impl FnMut(
+            TangentialControl,
+            Option<&PartialSlip>,
+        ) -> Result<(PartialSlip, Vec<f64>), E>,
+    ) -> Result<(FrettingCycle, Vec<Vec<f64>>), E> {
         let stages = loading.stages.max(1);
-        let peak = problem.solve_stage(loading.at(0.0), None)?;
-        let mut states = Vec::with_capacity(2 * stages + 1);
-        states.push(peak);
+        let (peak, peak_forces) = stage(loading.at(0.0), None)?;
+        let n = peak_forces.len();
         let mut half_slip = [vec![0.0; n], vec![0.0; n]];
-        let mut never_slips: Vec<bool> = problem.normal_force.iter().map(|&f| f > 0.0).collect();
+        let mut never_slips: Vec<bool> = peak_forces.iter().map(|&f| f > 0.0).collect();
         let (mut dissipated, mut loop_area, mut gross_slip) = (0.0, 0.0, false);
-        for stage in 1..=2 * stages {
-            let phase = std::f64::consts::PI * stage as f64 / stages as f64;
+        let mut states = Vec::with_capacity(2 * stages + 1);
+        let mut pressures = Vec::with_capacity(2 * stages + 1);
+        states.push(peak);
+        pressures.push(peak_forces);
+        for k in 1..=2 * stages {
+            let phase = std::f64::consts::PI * k as f64 / stages as f64;
             let previous = states.last().expect("the peak is there");
-            let next = problem.solve_stage(loading.at(phase), Some(previous))?;
-            let half = usize::from(stage > stages);
+            let (next, forces) = stage(loading.at(phase), Some(previous))?;
+            let half = usize::from(k > stages);
             for i in 0..n {
                 half_slip[half][i] += next.slip[i].abs();
                 // Friction opposes the slip at |F| = μP through the stage: −F Δs ≥ 0.
@@ -92,20 +111,22 @@ impl FrettingCycle {
                 never_slips[i] &= next.stick[i];
             }
             loop_area += 0.5 * (next.load + previous.load) * (next.shift - previous.shift);
-            gross_slip |= (0..n).all(|i| problem.normal_force[i] <= 0.0 || !next.stick[i]);
+            gross_slip |= (0..n).all(|i| forces[i] <= 0.0 || !next.stick[i]);
             states.push(next);
+            pressures.push(forces);
         }
         let slip_amplitude = (0..n)
             .map(|i| half_slip[0][i].max(half_slip[1][i]))
             .collect();
-        Ok(FrettingCycle {
+        let cycle = FrettingCycle {
             states,
             dissipated,
             loop_area,
             slip_amplitude,
             never_slips,
             gross_slip,
-        })
+        };
+        Ok((cycle, pressures))
     }
 
     /// Stages per half cycle.
@@ -243,59 +264,11 @@ impl FrettingCycle {
         normal: &mut dyn NormalResponse,
         loading: &FrettingLoading,
     ) -> Result<(FrettingCycle, Vec<Vec<f64>>), CoupledError> {
-        let n = problem.tangent_x.len();
-        let stages = loading.stages.max(1);
-        let mut pressures: Vec<Vec<f64>> = Vec::with_capacity(2 * stages + 1);
         let mut current = (coupling.initial.0.to_vec(), coupling.initial.1.to_vec());
-        let peak = coupled_stage(
-            problem,
-            coupling,
-            normal,
-            loading.at(0.0),
-            None,
-            &mut current,
-        )?;
-        let mut states = vec![peak];
-        pressures.push(current.0.clone());
-        let mut half_slip = [vec![0.0; n], vec![0.0; n]];
-        let mut never_slips: Vec<bool> = current.0.iter().map(|&f| f > 0.0).collect();
-        let (mut dissipated, mut loop_area, mut gross_slip) = (0.0, 0.0, false);
-        for stage in 1..=2 * stages {
-            let phase = std::f64::consts::PI * stage as f64 / stages as f64;
-            let previous = states.last().expect("the peak is there").clone();
-            let next = coupled_stage(
-                problem,
-                coupling,
-                normal,
-                loading.at(phase),
-                Some(&previous),
-                &mut current,
-            )?;
-            let half = usize::from(stage > stages);
-            for i in 0..n {
-                half_slip[half][i] += next.slip[i].abs();
-                dissipated -= next.force[i] * next.slip[i];
-                never_slips[i] &= next.stick[i];
-            }
-            loop_area += 0.5 * (next.load + previous.load) * (next.shift - previous.shift);
-            gross_slip |= (0..n).all(|i| current.0[i] <= 0.0 || !next.stick[i]);
-            states.push(next);
-            pressures.push(current.0.clone());
-        }
-        let slip_amplitude = (0..n)
-            .map(|i| half_slip[0][i].max(half_slip[1][i]))
-            .collect();
-        Ok((
-            FrettingCycle {
-                states,
-                dissipated,
-                loop_area,
-                slip_amplitude,
-                never_slips,
-                gross_slip,
-            },
-            pressures,
-        ))
+        Self::run_stages(loading, |control, from| {
+            let state = coupled_stage(problem, coupling, normal, control, from, &mut current)?;
+            Ok((state, current.0.clone()))
+        })
     }
 }
 

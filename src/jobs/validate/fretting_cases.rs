@@ -5,41 +5,20 @@
 
 use super::cases::{fail, push, Checks, Outcome};
 use super::Bound;
-use crate::complementarity::{ContactSolver, Direction, Method, Status};
-use crate::contact::CondensedContact;
 use crate::fretting::{FrettingControl, FrettingCycle, FrettingLoading};
-use crate::partial_slip::TangentialProblem;
 use std::f64::consts::PI;
 
 /// `hertz` at half its load (a = 2 mm), p = 12, μ = 0.3, cycled at ±0.9 μP: the energy
 /// 4μ ∫ p |s| dx over both slip zones, |s| = (μp₀/(E*a))[|x|√(x² − c²) − c² arcosh(|x|/c)].
 pub fn cycle_energy(checks: &mut Checks) -> Outcome {
     let top = 17.2556;
-    let p = super::cases::problem(
-        "hertz",
-        &[("p = 8", "p = 12"), ("normal = 38.825", "normal = 17.2556")],
-    )?;
-    let (contact, body1, body2) = CondensedContact::build(&p).map_err(|e| fail("hertz", e))?;
-    let (normal, info) = ContactSolver::new(&contact, Method::ActiveSet)
-        .solve(&contact.points.initial_gap, Direction::Plus);
-    if info.status != Status::Solved {
-        return Err(fail("hertz", "the normal contact solve failed"));
-    }
-    let a_tt = contact
-        .tangential_flexibility(&p, &body1, &body2)
-        .map_err(|e| fail("hertz", e))?;
-    let force: Vec<f64> = (normal.pressure.iter().zip(contact.areas()))
-        .map(|(p, a)| p * a)
-        .collect();
-    let tangent_x: Vec<f64> = contact.points.tangent.iter().map(|t| t[0]).collect();
+    let hertz = super::partial_slip_cases::PressedHertz::new(&[
+        ("p = 8", "p = 12"),
+        ("normal = 38.825", "normal = 17.2556"),
+    ])?;
     let (friction, ratio) = (0.3, 0.9);
-    let problem = TangentialProblem {
-        a_tt: &a_tt,
-        tangent_x: &tangent_x,
-        normal_force: &force,
-        friction,
-        coupling: None,
-    };
+    let problem = hertz.problem(friction);
+    let force = &hertz.force;
     let total: f64 = force.iter().sum();
     let loading = FrettingLoading {
         control: FrettingControl::Force,
