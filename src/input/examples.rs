@@ -13,6 +13,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         "fretting-gross-slip",
         include_str!("../../examples/fretting-gross-slip.toml"),
     ),
+    (
+        "fretting-dissimilar",
+        include_str!("../../examples/fretting-dissimilar.toml"),
+    ),
     ("punch-a", include_str!("../../examples/punch-a.toml")),
     ("punch-b20", include_str!("../../examples/punch-b20.toml")),
     ("punch-b40", include_str!("../../examples/punch-b40.toml")),

@@ -13,6 +13,7 @@ use std::time::Instant;
 mod axisymmetric_cases;
 mod cases;
 mod fretting_cases;
+pub mod half_plane;
 mod heat_cases;
 mod part_cases;
 mod partial_slip_cases;

@@ -110,17 +110,25 @@ pub fn write_contact(
     )
     .map_err(&e)?;
     let friction = setup.settings.friction;
-    let inside = |i: &usize| result.normal.pressure[*i] > 0.0 || x[*i].abs() < 1e-12;
+    // The friction limits of the shear at the peak (−μp, Q along +x) and at the trough (+μp):
+    // the coupled cycle's shear moves the pressure, so the normal loading's would not bound it.
+    let pressure_at = |k: usize, i: usize| result.cycle_forces[k][i] / setup.area[i];
+    let trough = cycle.stages();
+    let inside = |i: &usize| {
+        result.normal.pressure[*i] > 0.0
+            || result.cycle_forces.iter().any(|f| f[*i] > 0.0)
+            || x[*i].abs() < 1e-12
+    };
     let loaded: Vec<usize> = (0..n).filter(inside).collect();
     let series_of = |f: &dyn Fn(usize) -> f64| loaded.iter().map(|&i| (x[i], f(i))).collect();
     let mut series = vec![
         Series {
-            label: "μp",
-            points: series_of(&|i| friction * result.normal.pressure[i]),
+            label: "μp at the trough",
+            points: series_of(&|i| friction * pressure_at(trough, i)),
         },
         Series {
-            label: "−μp",
-            points: series_of(&|i| -friction * result.normal.pressure[i]),
+            label: "−μp at the peak",
+            points: series_of(&|i| -friction * pressure_at(0, i)),
         },
     ];
     for (k, label) in instants.iter().zip(&names) {
