@@ -33,7 +33,8 @@
 //! contact edge, in contact or not (the pairs are fixed, as the contact's are).
 //!
 //! The problem is reduced ([`crate::conduction::reduced`]) to the space its inputs excite
-//! (the flux at each contact point, the constant sources, the initial field) and integrated
+//! (the contact's flux in smooth shapes along the contact ([`shapes`]), the constant
+//! sources, the initial field) and integrated
 //! exactly in time in its modes: no time step, no stability limit, and a step of k half
 //! periods costs what one does. The thermal gap is linear in the temperature: per mode, the
 //! gap of its temperature field through each body's elastic solve with the thermal load
@@ -56,6 +57,7 @@ mod bodies;
 mod build;
 pub mod counterface;
 mod outputs;
+pub mod shapes;
 mod stepping;
 pub use build::{CoupledSystem, ThermalBodies, ThermalError, SHIFTS};
 pub use outputs::{GapOutput, Output};

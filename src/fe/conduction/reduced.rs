@@ -26,6 +26,17 @@
 //! directions whose Gram eigenvalue falls below 10⁻¹² of the largest: the blocks of nearby
 //! shifts are nearly parallel).
 //!
+//! # Cost
+//!
+//! A block of m inputs costs a factorisation, m solves and its Gram–Schmidt against the r
+//! directions kept so far, 4 N r m flops a pass: the set-up grows as N r m, and r itself
+//! grows with m (the blocks of all shifts together keep half to two thirds of their
+//! directions). So the caller keeps m small: the run's contact heat enters as a few smooth
+//! shapes along the contact, not one input per point (`wear::thermal::shapes`: 35 inputs
+//! and 202 modes instead of 67 and 305 on punch-b40-heat). C V is kept beside V, so that
+//! the projections are dense products and C is applied to a block twice instead of four
+//! times.
+//!
 //! # The modes and their exact integration
 //!
 //! In V the pencil is VᵀKV a + ȧ = Vᵀ f (VᵀCV = I); its eigenvectors give modes Φ = V Q with
@@ -51,7 +62,6 @@
 
 use super::blocks::{BlockOperator, PairedMatrices};
 use super::transient::{SparseFactor, SparseSymbolic};
-use faer::sparse::SparseColMat;
 use faer::{Mat, MatRef, Side};
 
 /// The heat problem's operators as the reduction needs them: K and C as blocks (for products
@@ -101,8 +111,11 @@ pub enum ReductionError {
     Eigen,
 }
 
-/// A basis kept C-orthonormal as blocks are added, with C times it (so that a new block's
-/// projection costs dense products only).
+/// A basis kept C-orthonormal as blocks are added, with C times it, so that a new block's
+/// projection VᵀCW = (CV)ᵀW costs dense products only: applying C to a block (element by
+/// element, 81 × 81 dense products at p = 8) cost as much as the products themselves, and
+/// was made four times a block; it is now made twice (for the columns' norms and for the
+/// projected block's Gram matrix, which then also gives C times the kept directions).
 struct Basis {
     /// The basis, column by column (N values each): reserved for every direction that may
     /// be added but filled only as directions are kept, so that memory is touched for the
@@ -110,10 +123,20 @@ struct Basis {
     /// punch-b40-heat; reserving it whole and zeroing it, most of a gigabyte at 32 contact
     /// elements).
     columns: Vec<f64>,
+    /// C times the basis, the same way (N r values, as much as the basis).
+    capacity_columns: Vec<f64>,
     rows: usize,
 }
 
 impl Basis {
+    fn with_capacity(rows: usize, most: usize) -> Basis {
+        Basis {
+            columns: Vec::with_capacity(rows * most),
+            capacity_columns: Vec::with_capacity(rows * most),
+            rows,
+        }
+    }
+
     fn len(&self) -> usize {
         self.columns.len() / self.rows.max(1)
     }
@@ -122,15 +145,18 @@ impl Basis {
         MatRef::from_column_major_slice(&self.columns, self.rows, self.len())
     }
 
+    fn capacity_view(&self) -> MatRef<'_, f64> {
+        MatRef::from_column_major_slice(&self.capacity_columns, self.rows, self.len())
+    }
+
     /// Add the directions of `w` (N × b) that the basis lacks: block classical Gram–Schmidt
     /// in the C inner product, twice (one pass leaves the new directions orthogonal only to
     /// the square root of round-off when they are nearly dependent), then the block's own
     /// Gram matrix is diagonalised and its directions whose norm left after projection is
-    /// below √DROP of what they had are dropped. C times the basis is not kept (it doubled
-    /// the memory): each pass applies C to the block again, at a cost of the block's width.
+    /// below √DROP of what they had are dropped.
     fn add(&mut self, capacity: &BlockOperator, w: Mat<f64>) -> Result<(), ReductionError> {
         let mut w = w;
-        let mut cw = capacity.apply(w.as_ref());
+        let cw = capacity.apply(w.as_ref());
         // Unit C-norm columns, so that the drop is relative to each direction's own size.
         for c in 0..w.ncols() {
             let norm: f64 = (0..w.nrows())
@@ -148,12 +174,11 @@ impl Basis {
         }
         if self.len() > 0 {
             for _ in 0..2 {
-                cw = capacity.apply(w.as_ref());
-                let h = self.view().transpose() * &cw;
+                let h = self.capacity_view().transpose() * &w;
                 w -= self.view() * &h;
             }
         }
-        cw = capacity.apply(w.as_ref());
+        let cw = capacity.apply(w.as_ref());
         let gram = w.transpose() * &cw;
         let eigen = gram
             .self_adjoint_eigen(Side::Lower)
@@ -168,8 +193,10 @@ impl Basis {
             u[(r, kept[j])] / s[kept[j]].sqrt()
         });
         let added = &w * &scale;
+        let capacity_added = &cw * &scale;
         for c in 0..added.ncols() {
             self.columns.extend(added.col(c).iter());
+            self.capacity_columns.extend(capacity_added.col(c).iter());
         }
         Ok(())
     }
@@ -190,22 +217,18 @@ fn krylov_basis(
         .ok_or(ReductionError::NotDefinite { shift: 0.0 })?;
     let most = extra.len()
         + inputs.ncols() * (shifts.len() + shifts.iter().filter(|&&s| s == 0.0).count());
-    let mut basis = Basis {
-        columns: Vec::with_capacity(n * most),
-        rows: n,
-    };
+    let mut basis = Basis::with_capacity(n, most);
     basis.add(
         operators.capacity,
         Mat::from_fn(n, extra.len(), |i, j| extra[j][i]),
     )?;
+    // One matrix for every shift, its values overwritten (K + σC shares K's pattern), rather
+    // than a copy of the pattern per shift.
+    let mut matrix = k.clone();
     for &shift in shifts {
-        let values: Vec<f64> = k
-            .val()
-            .iter()
-            .zip(c.val())
-            .map(|(k, c)| k + shift * c)
-            .collect();
-        let matrix = SparseColMat::new(k.symbolic().to_owned().expect("a valid pattern"), values);
+        for ((m, k), c) in matrix.val_mut().iter_mut().zip(k.val()).zip(c.val()) {
+            *m = k + shift * c;
+        }
         let factor = SparseFactor::with_symbolic(&symbolic, &matrix)
             .ok_or(ReductionError::NotDefinite { shift })?;
         let mut w = inputs.to_owned();

@@ -3,7 +3,7 @@
 //! as the reference), and its reduction to the modes the run steps ([`ThermalModel`]).
 
 use super::bodies::conduction_spec;
-use super::outputs::{thermal_gap, GapOutput, Output};
+use super::outputs::{boundary_samples, stored_output, thermal_gap, GapOutput, Output};
 use super::{Dynamics, Sliding, ThermalFields, ThermalInfo, ThermalModel, INTERFACE_CONDUCTANCE};
 use crate::basis::Space;
 use crate::conduction::blocks::{assemble_pair, Block, BlockOperator, PairedMatrices};
@@ -17,7 +17,6 @@ use crate::elasticity::ElasticBody;
 use crate::elasticity::ThermalLoads;
 use crate::geometry::Point;
 use crate::heat_input::{HeatSettings, Partition};
-use crate::quadrature::gauss_lobatto;
 use faer::Mat;
 use std::sync::Arc;
 use std::time::Instant;
@@ -112,6 +111,9 @@ pub struct CoupledSystem {
     peclet: [f64; 2],
     /// Contact areas w_i t, mm².
     area: Vec<f64>,
+    /// The shapes (points × m) in which the contact's heat enters the reduction, or None:
+    /// one input per point ([`super::shapes`]).
+    shapes: Option<Mat<f64>>,
     /// The two bodies' conduction operators, and where each one's free unknowns start.
     bodies: [ConductionBody; 2],
     offsets: [usize; 2],
@@ -323,6 +325,7 @@ impl CoupledSystem {
         let stored =
             [0, 1].map(|b| stored_output(&thermal[b], &held[b], offsets[b], settings.reference));
         let peclet = [0, 1].map(|b| peclet(input, &thermal[b], b));
+        let symmetric = thermal[0].is_symmetric() && thermal[1].is_symmetric();
         Ok(CoupledSystem {
             conductivity,
             capacity,
@@ -337,12 +340,18 @@ impl CoupledSystem {
             stored,
             constants,
             has_exit,
-            symmetric: thermal[0].is_symmetric() && thermal[1].is_symmetric(),
+            symmetric,
             trapped,
             held_points,
             conductance,
             peclet,
             area,
+            // A flowing body's heat stays with its point (see the shapes' module).
+            shapes: if symmetric {
+                super::shapes::shapes(&contact.points.x)
+            } else {
+                None
+            },
             bodies: thermal,
             offsets,
             loads,
@@ -444,13 +453,16 @@ impl CoupledSystem {
 
     /// The reduced model of this system at `shifts` (1/s).
     pub fn reduce(&self, shifts: &[f64]) -> Result<ReducedModel, ThermalError> {
-        let n = self.flux.ncols();
+        // The contact's heat in its shapes, F S, or one input per point, F.
+        let shaped = self.shapes.as_ref().map(|s| &self.flux * s);
+        let flux = shaped.as_ref().unwrap_or(&self.flux);
+        let n = flux.ncols();
         let size = self.len();
         let mut inputs = Mat::<f64>::zeros(size, n + 2);
         let c_initial = self.capacity.apply_vector(&self.initial);
         for i in 0..size {
             for j in 0..n {
-                inputs[(i, j)] = self.flux[(i, j)];
+                inputs[(i, j)] = flux[(i, j)];
             }
             inputs[(i, n)] = self.source[i];
             inputs[(i, n + 1)] = c_initial[i];
@@ -559,49 +571,6 @@ impl ThermalModel {
             area: system.area.clone(),
             info,
         })
-    }
-}
-
-/// Where each body's largest temperature is looked for: the Lobatto points of its contact
-/// edge (where the heat enters), and the ends and middle of every other boundary edge (held
-/// and convecting edges, where a hot ambient or a held temperature can lead). A body heated
-/// only at its boundary has its largest temperature on the boundary (the maximum principle).
-fn boundary_samples(
-    body: &ConductionBody,
-    contact_edge: &[(usize, usize)],
-) -> Vec<Vec<(usize, f64)>> {
-    let lobatto = gauss_lobatto(body.basis.p + 1).points;
-    let mut samples = Vec::new();
-    for (element, local, _) in crate::heat_input::boundary_edges(&body.mesh) {
-        let points: &[f64] = if contact_edge.contains(&(element, local)) {
-            &lobatto
-        } else {
-            &[-1.0, 0.0, 1.0]
-        };
-        for &t in points {
-            samples.push(body.edge_trace(element, local, t));
-        }
-    }
-    samples
-}
-
-fn stored_output(body: &ConductionBody, held: &[f64], offset: usize, reference: f64) -> Output {
-    let weights = body.heat_content_weights();
-    let uniform = body.uniform(reference);
-    let mut constant = 0.0;
-    let mut row = Vec::new();
-    for (g, &w) in weights.iter().enumerate() {
-        match body.free_index(g) {
-            Some(f) => {
-                row.push((offset + f, w));
-                constant -= w * uniform[g];
-            }
-            None => constant += w * (held[g] - uniform[g]),
-        }
-    }
-    Output {
-        rows: vec![row],
-        offset: vec![constant],
     }
 }
 

@@ -10,6 +10,7 @@ use crate::conduction::reduced::ReducedModel;
 use crate::conduction::ConductionBody;
 use crate::contact::CondensedContact;
 use crate::elasticity::{ElasticBody, ThermalLoads};
+use crate::quadrature::gauss_lobatto;
 use faer::{Mat, MatRef};
 
 /// y = M T + c with M given by sparse rows over the combined free unknowns.
@@ -217,4 +218,54 @@ pub fn thermal_gap(
         });
     }
     Ok(GapOutput { bodies, offset })
+}
+
+/// Where each body's largest temperature is looked for: the Lobatto points of its contact
+/// edge (where the heat enters), and the ends and middle of every other boundary edge (held
+/// and convecting edges, where a hot ambient or a held temperature can lead). A body heated
+/// only at its boundary has its largest temperature on the boundary (the maximum principle).
+pub(super) fn boundary_samples(
+    body: &ConductionBody,
+    contact_edge: &[(usize, usize)],
+) -> Vec<Vec<(usize, f64)>> {
+    let lobatto = gauss_lobatto(body.basis.p + 1).points;
+    let mut samples = Vec::new();
+    for (element, local, _) in crate::heat_input::boundary_edges(&body.mesh) {
+        let points: &[f64] = if contact_edge.contains(&(element, local)) {
+            &lobatto
+        } else {
+            &[-1.0, 0.0, 1.0]
+        };
+        for &t in points {
+            samples.push(body.edge_trace(element, local, t));
+        }
+    }
+    samples
+}
+
+/// The heat stored in `body` relative to the stress-free temperature `reference` (°C), mJ,
+/// as an output over the combined free unknowns (the body's starting at `offset`).
+pub(super) fn stored_output(
+    body: &ConductionBody,
+    held: &[f64],
+    offset: usize,
+    reference: f64,
+) -> Output {
+    let weights = body.heat_content_weights();
+    let uniform = body.uniform(reference);
+    let mut constant = 0.0;
+    let mut row = Vec::new();
+    for (g, &w) in weights.iter().enumerate() {
+        match body.free_index(g) {
+            Some(f) => {
+                row.push((offset + f, w));
+                constant -= w * uniform[g];
+            }
+            None => constant += w * (held[g] - uniform[g]),
+        }
+    }
+    Output {
+        rows: vec![row],
+        offset: vec![constant],
+    }
 }
