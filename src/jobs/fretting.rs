@@ -198,9 +198,6 @@ pub fn run(
     on_step: impl FnMut(&FrettingStep),
 ) -> Result<FrettingRun, JobError> {
     let setup = FrettingSetup::new(problem)?;
-    if setup.settings.coupled {
-        return Err(problem.error("fretting.coupled", "a fretting run of the coupled problem is not built yet: its cycles are (`wearfem contact` gives the coupled cycle, exact), but their fixed point slows down by orders of magnitude once the slip zones wear (a run of fretting-cylinder did 10³ cycles in 0.9 s and not 10⁶ in 100 s). fretting.coupled = false runs Cattaneo's uncoupled problem (exact for one material in the half-space limit; the default there)").into());
-    }
     let wear = setup.settings.wear.clone().ok_or_else(|| {
         problem.error(
             "wear",

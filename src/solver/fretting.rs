@@ -154,41 +154,51 @@ impl FrettingCycle {
         term
     }
 
-    /// [`FrettingCycle::sliding_term`] with each stage's slip weighted by its normal force
-    /// against the reference, ((P_k−1 + P_k)/(2 P_ref))ᵇ, so that β̃ P_refᵇ T is the cycle's wear
-    /// Σ β̃ P_kᵇ|Δs|ᵃ Δt^(1−a) where the coupled cycle changes the pressure (`forces`: each
-    /// state's normal forces, N; `reference`: N). A point without reference force gets 0.
+    /// The cycle's wear per unit β̃ at each point, Σ_k p̄_kᵇ |Δs_k|ᵃ Δt^(1−a) with p̄_k the
+    /// stage's mean pressure (`pressures`: each state's, MPa), written as `term`·pᵇ + `extra`
+    /// so that it is exact at p = `reference` (MPa), the pressure the wear step takes as its
+    /// unknown, and smooth in it. Where the cycle presses a point less than the reference
+    /// does (the uncoupled cycle: equally), the stages' pressures are scaled with the
+    /// reference: `term` = Σ (p̄_k/p_ref)ᵇ |Δs_k|ᵃ Δt^(1−a), `extra` = 0. Where it presses
+    /// more, the excess is held: `term` = Σ |Δs_k|ᵃ Δt^(1−a), `extra` the rest, ≥ 0. A
+    /// ratio p̄_k/p_ref would grow without bound at a point that the coupled cycle's shear
+    /// presses and the reference hardly does (the contact's edge), and drop to nothing where
+    /// the reference is zero; the held excess does neither.
     pub fn weighted_sliding_term(
         &self,
         (a, b): (f64, f64),
         omega: f64,
-        forces: &[Vec<f64>],
+        pressures: &[Vec<f64>],
         reference: &[f64],
-    ) -> Vec<f64> {
+    ) -> (Vec<f64>, Vec<f64>) {
         let n = self.slip_amplitude.len();
         let stage_time = std::f64::consts::PI / (self.stages() as f64 * omega);
-        let mut term = vec![0.0; n];
-        for (k, state) in self.states.iter().enumerate().skip(1) {
-            for i in 0..n {
-                if reference[i] <= 0.0 {
-                    continue;
-                }
-                let ratio = 0.5 * (forces[k - 1][i] + forces[k][i]) / reference[i];
-                let weight = if b == 1.0 {
-                    ratio
-                } else {
-                    ratio.max(0.0).powf(b)
-                };
+        let power = |p: f64| if b == 1.0 { p } else { p.max(0.0).powf(b) };
+        let (mut term, mut extra) = (vec![0.0; n], vec![0.0; n]);
+        for i in 0..n {
+            let (mut plain, mut scaled, mut pressed) = (0.0, 0.0, 0.0);
+            for (k, state) in self.states.iter().enumerate().skip(1) {
                 let slip = state.slip[i].abs();
-                term[i] += weight
-                    * if a == 1.0 {
-                        slip
-                    } else {
-                        slip.powf(a) * stage_time.powf(1.0 - a)
-                    };
+                let weight = if a == 1.0 {
+                    slip
+                } else {
+                    slip.powf(a) * stage_time.powf(1.0 - a)
+                };
+                let mean = 0.5 * (pressures[k - 1][i] + pressures[k][i]);
+                plain += weight;
+                pressed += power(mean) * weight;
+                if reference[i] > 0.0 {
+                    scaled += power(mean / reference[i]) * weight;
+                }
+            }
+            if reference[i] > 0.0 && scaled <= plain {
+                term[i] = scaled;
+            } else {
+                term[i] = plain;
+                extra[i] = (pressed - power(reference[i].max(0.0)) * plain).max(0.0);
             }
         }
-        term
+        (term, extra)
     }
 
     /// The x extent (mm) of the points that never slip, from `x` (mm, one per point): None if

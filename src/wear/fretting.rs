@@ -3,21 +3,27 @@
 //!
 //! A step takes the contact from its worn shape g through k cycles:
 //!
-//! 1. The cycle at the step's start (its pressure p): each point's ∫|ṡ|ᵃ dt over a cycle,
-//!    T_i ([`FrettingCycle::weighted_sliding_term`]: each stage's slip weighted by its normal
-//!    force against the step's where a coupled cycle changes it), zero where the point sticks.
-//! 2. The implicit step g⁺ = g + k Σ_l β̃_l T_l,i p⁺_iᵇˡ with the pressure p⁺ of the worn
-//!    shape g⁺, solved as one contact problem with the wear as a compliance in series with
-//!    the bodies' (b = 1), or by Newton's method on the linearised wear (b ≠ 1) as the
+//! 1. The cycle at the step's start (its frictionless pressure p): each point's wear per
+//!    cycle as T_i pᵇ + E_i ([`FrettingCycle::weighted_sliding_term`]), exact at p: T_i the
+//!    point's ∫|ṡ|ᵃ dt over a cycle, zero where the point sticks; in a coupled cycle, whose
+//!    shear moves the pressure, each stage's slip weighted by that stage's pressure against
+//!    p, and E_i ≥ 0 what the cycle presses a point beyond p (a point at the contact's edge
+//!    that only the shear presses wears by E_i alone).
+//! 2. The implicit step g⁺ = g + k Σ_l β̃_l (T_l,i p⁺_iᵇˡ + E_l,i) with the pressure p⁺ of the
+//!    worn shape g⁺, solved as one contact problem with the wear as a compliance in series
+//!    with the bodies' (b = 1), or by Newton's method on the linearised wear (b ≠ 1) as the
 //!    sliding run's implicit step is ([`crate::wear::law`]). The slip terms are held from the
 //!    step's start (they change slowly: the stick zone of a force-controlled cycle does not
 //!    move at all for two bodies of one material, Ciavarella and Hills), the pressure is
 //!    implicit: stable for any k, so that the pressure of a slip zone that wears out falls to
-//!    zero instead of overshooting.
+//!    zero instead of overshooting. E is held (explicit): the jump control bounds its change.
 //! 3. The cycle at the step's end gives the next step's terms and the error estimate: half
-//!    the change of the wear increment, k Σ β̃ p⁺ᵇ |T⁺ − T|/2, the difference between holding
-//!    the terms and the trapezoid rule. A step whose estimate exceeds `tolerance` of its
-//!    largest wear is taken again with half the cycles; k grows by at most 2 per step.
+//!    the change of the wear increment between the start's terms and the end's, both at p⁺,
+//!    the difference between holding the terms and the trapezoid rule. A step whose estimate
+//!    exceeds `tolerance` of its largest wear is taken again with fewer cycles; k grows by at
+//!    most 2 per step. A shorter jump whose estimate does not fall (it falls with the jump
+//!    where the terms change smoothly) has met a step change of the cycle itself, a point
+//!    turning from stick to slip within a stage, which no jump resolves: it is taken.
 //!
 //! The run ends after `cycles` cycles, or as soon as no point that carries pressure slips:
 //! wear has stopped (the final state of partial slip).
@@ -151,8 +157,8 @@ struct State {
     wear: [Vec<f64>; 2],
     pressure: Vec<f64>,
     cycle: FrettingCycle,
-    /// Each state's normal forces through the cycle, N.
-    cycle_forces: Vec<Vec<f64>>,
+    /// The pressure (MPa) of each state of the cycle.
+    cycle_pressures: Vec<Vec<f64>>,
 }
 
 /// A fretting run on `contact` (whose solve `solver` is frictionless: the normal load is
@@ -173,13 +179,13 @@ pub fn run(
     if pressure.iter().all(|p| *p <= 0.0) {
         return Err(FrettingStop::NoContact);
     }
-    let (cycle, cycle_forces) = cycle_at(model, &pressure, &shape, &area)?;
+    let (cycle, cycle_pressures) = cycle_at(model, &pressure, &shape, &area)?;
     let mut state = State {
         shape,
         wear: [vec![0.0; n], vec![0.0; n]],
         pressure,
         cycle,
-        cycle_forces,
+        cycle_pressures,
     };
     let mut history = FrettingHistory {
         steps: vec![],
@@ -195,7 +201,7 @@ pub fn run(
     let mut records = input.record_cycles.iter().copied().peekable();
     let mut step = 0;
     while done < input.cycles {
-        if !slips(&state.cycle, &state.pressure) {
+        if !slips(&state) {
             history.wear_stopped = Some(done);
             break;
         }
@@ -215,14 +221,15 @@ pub fn run(
             .unwrap_or(input.cycles)
             .min(input.cycles);
         let mut rejected = 0;
+        let mut last_attempt: Option<(f64, f64)> = None;
         let (next, jump) = loop {
             let jump = k.min(limit - done).max(1.0);
             let attempt = (|| {
                 let next = implicit_step(solver, contact, input, &state, jump, &area, &mut solves)?;
-                let (cycle, cycle_forces) = cycle_at(model, &next.pressure, &next.shape, &area)?;
+                let (cycle, cycle_pressures) = cycle_at(model, &next.pressure, &next.shape, &area)?;
                 Ok::<_, FrettingStop>(State {
                     cycle,
-                    cycle_forces,
+                    cycle_pressures,
                     ..next
                 })
             })();
@@ -236,7 +243,7 @@ pub fn run(
                     return Ok(history);
                 }
             };
-            let error = jump_error(input, (&state, &next), &area, jump);
+            let error = jump_error(input, (&state, &next), jump);
             let factor = if error > 0.0 {
                 (0.9 * (input.tolerance / error).sqrt()).clamp(0.2, 2.0)
             } else {
@@ -246,6 +253,15 @@ pub fn run(
                 k = (jump * factor).clamp(1.0, MAX_JUMP).round();
                 break (next, jump);
             }
+            if last_attempt.is_some_and(|(j, e)| error > e * (jump / j).sqrt()) {
+                // A shorter jump did not shrink the estimate (it falls with the jump where
+                // the slip terms change smoothly): the cycle changed by a step of its own,
+                // a point turning from stick to slip within a stage, which no jump resolves.
+                // Taken, the jump kept.
+                k = jump;
+                break (next, jump);
+            }
+            last_attempt = Some((jump, error));
             rejected += 1;
             k = (jump * factor).max(1.0).floor();
         };
@@ -260,7 +276,7 @@ pub fn run(
             dissipated: state.cycle.dissipated,
             peak_load: state.cycle.states[0].load,
             deepest_wear: [0, 1].map(|b| state.wear[b].iter().fold(0.0f64, |m, w| m.max(*w))),
-            slipping_points: slipping(&state.cycle, &state.pressure),
+            slipping_points: slipping(&state),
             rejected,
         };
         on_step(&record);
@@ -277,9 +293,9 @@ pub fn run(
     Ok(history)
 }
 
-/// Whether some point that carries pressure slips in `cycle`.
-fn slips(cycle: &FrettingCycle, pressure: &[f64]) -> bool {
-    slipping(cycle, pressure) > 0
+/// Whether some point that carries pressure slips in the state's cycle.
+fn slips(state: &State) -> bool {
+    slipping(state) > 0
 }
 
 /// A pressure below this fraction of the largest counts as none: a worn-out slip zone keeps
@@ -287,12 +303,19 @@ fn slips(cycle: &FrettingCycle, pressure: &[f64]) -> bool {
 /// stepping, and with a = 0.5 their slips of round-off size held the jumps at a few cycles).
 pub const RESIDUAL_PRESSURE: f64 = 1e-9;
 
-/// Points that carry pressure (above [`RESIDUAL_PRESSURE`] of the largest) and slip in
-/// `cycle`.
-fn slipping(cycle: &FrettingCycle, pressure: &[f64]) -> usize {
-    let floor = RESIDUAL_PRESSURE * pressure.iter().fold(0.0f64, |m, p| m.max(*p));
-    (0..pressure.len())
-        .filter(|&i| pressure[i] > floor && !cycle.never_slips[i])
+/// Points that carry pressure (above [`RESIDUAL_PRESSURE`] of the largest, at some instant of
+/// the cycle: the coupled cycle's shear presses points the normal load alone leaves open)
+/// and slip in the state's cycle.
+fn slipping(state: &State) -> usize {
+    let n = state.pressure.len();
+    let largest_at = |i: usize| {
+        (state.cycle_pressures.iter())
+            .map(|p| p[i])
+            .fold(state.pressure[i], f64::max)
+    };
+    let largest = (0..n).map(largest_at).fold(0.0f64, f64::max);
+    (0..n)
+        .filter(|&i| largest_at(i) > RESIDUAL_PRESSURE * largest && !state.cycle.never_slips[i])
         .count()
 }
 
@@ -339,34 +362,52 @@ fn cycle_at(
     area: &[f64],
 ) -> Result<(FrettingCycle, Vec<Vec<f64>>), FrettingStop> {
     let normal_force: Vec<f64> = pressure.iter().zip(area).map(|(p, a)| p * a).collect();
-    model
+    let (cycle, forces) = model
         .cycle(&normal_force, shape)
-        .map_err(FrettingStop::Cycle)
+        .map_err(FrettingStop::Cycle)?;
+    let pressures = forces
+        .iter()
+        .map(|f| f.iter().zip(area).map(|(f, a)| f / a).collect())
+        .collect();
+    Ok((cycle, pressures))
 }
 
-/// Each law's wear per cycle at each point over `jump` cycles, as the coefficient c of
-/// W = c pᵇ at the state's own pressure: c = jump β̃ T_i, the slip weighted by the cycle's
-/// normal forces against the state's.
-fn step_terms(input: &FrettingWearInput, state: &State, area: &[f64], jump: f64) -> Vec<Vec<f64>> {
-    let reference: Vec<f64> = state
-        .pressure
-        .iter()
-        .zip(area)
-        .map(|(p, a)| p * a)
-        .collect();
+/// Each law's wear at each point over `jump` cycles as W = c pᵇ + e in the pressure p
+/// (MPa) of the frictionless solve, exact at the state's own: c and e are jump β̃ times
+/// [`FrettingCycle::weighted_sliding_term`]'s term and extra.
+fn step_terms(input: &FrettingWearInput, state: &State, jump: f64) -> Vec<StepTerms> {
     input
         .laws
         .iter()
         .map(|(_, l)| {
-            let term = state.cycle.weighted_sliding_term(
+            let (term, extra) = state.cycle.weighted_sliding_term(
                 (l.a, l.b),
                 input.omega,
-                &state.cycle_forces,
-                &reference,
+                &state.cycle_pressures,
+                &state.pressure,
             );
-            term.iter().map(|t| jump * l.beta * t).collect()
+            let scale = |v: Vec<f64>| v.iter().map(|t| jump * l.beta * t).collect();
+            StepTerms {
+                coefficient: scale(term),
+                held: scale(extra),
+            }
         })
         .collect()
+}
+
+/// One law's wear over a step, W_i = c_i pᵇ + e_i.
+struct StepTerms {
+    /// c_i, mm/MPaᵇ.
+    coefficient: Vec<f64>,
+    /// e_i, mm: the wear of the cycle's pressure beyond the frictionless solve's, held.
+    held: Vec<f64>,
+}
+
+impl StepTerms {
+    /// The wear at point `i` under pressure `p` (MPa), mm.
+    fn wear(&self, i: usize, b: f64, p: f64) -> f64 {
+        law::half_period_wear(&[(self.coefficient[i], b)], p) + self.held[i]
+    }
 }
 
 /// The implicit step of `jump` cycles from `state` with the slip terms of its cycle.
@@ -380,10 +421,10 @@ fn implicit_step(
     solves: &mut usize,
 ) -> Result<State, FrettingStop> {
     let n = contact.len();
-    let coefficients = step_terms(input, state, area, jump);
+    let coefficients = step_terms(input, state, jump);
     let terms_at = |i: usize| -> Vec<(f64, f64)> {
         (input.laws.iter().zip(&coefficients))
-            .map(|((_, l), c)| (c[i], l.b))
+            .map(|((_, l), c)| (c.coefficient[i], l.b))
             .collect()
     };
     let loaded: Vec<f64> = state
@@ -410,8 +451,10 @@ fn implicit_step(
             let wear = law::half_period_wear(&terms, guess[i]);
             slopes[i] = slope;
             compliance[i] = slope / area[i];
+            let held: f64 = coefficients.iter().map(|c| c.held[i]).sum();
             gap[i] = contact.points.initial_gap[i]
                 + state.shape[i]
+                + held
                 + if linear { 0.0 } else { wear - slope * guess[i] };
         }
         solver.set_compliance(&compliance);
@@ -440,7 +483,7 @@ fn implicit_step(
             let mut shape = state.shape.clone();
             for ((body, l), c) in input.laws.iter().zip(&coefficients) {
                 for i in 0..n {
-                    let w = law::half_period_wear(&[(c[i], l.b)], out.pressure[i]);
+                    let w = c.wear(i, l.b, out.pressure[i]);
                     next_wear[*body][i] += w;
                     shape[i] += w;
                 }
@@ -450,7 +493,7 @@ fn implicit_step(
                 wear: next_wear,
                 pressure: out.pressure.clone(),
                 cycle: state.cycle.clone(),
-                cycle_forces: state.cycle_forces.clone(),
+                cycle_pressures: state.cycle_pressures.clone(),
             });
         }
         for i in 0..n {
@@ -477,23 +520,18 @@ fn implicit_step(
 
 /// The jump's local error estimate, relative to its largest wear: half the change of the
 /// wear increment between the terms of the step's start and of its end, at the end pressure.
-fn jump_error(
-    input: &FrettingWearInput,
-    (start, end): (&State, &State),
-    area: &[f64],
-    jump: f64,
-) -> f64 {
+fn jump_error(input: &FrettingWearInput, (start, end): (&State, &State), jump: f64) -> f64 {
     // The start's slip terms (weighted against the start's own pressure) and the end's, both
     // taken at the end's pressure.
-    let before = step_terms(input, start, area, jump);
-    let after = step_terms(input, end, area, jump);
+    let before = step_terms(input, start, jump);
+    let after = step_terms(input, end, jump);
     let n = end.pressure.len();
     let (mut largest, mut error) = (0.0f64, 0.0f64);
     for i in 0..n {
         let (mut held, mut ended) = (0.0, 0.0);
         for (((_, l), c0), c1) in input.laws.iter().zip(&before).zip(&after) {
-            held += law::half_period_wear(&[(c0[i], l.b)], end.pressure[i]);
-            ended += law::half_period_wear(&[(c1[i], l.b)], end.pressure[i]);
+            held += c0.wear(i, l.b, end.pressure[i]);
+            ended += c1.wear(i, l.b, end.pressure[i]);
         }
         largest = largest.max(held);
         error = error.max(0.5 * (ended - held).abs());
