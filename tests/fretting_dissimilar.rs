@@ -33,35 +33,6 @@ fn dissimilar(young_pad: f64, ratio: f64, degree: usize) -> (Problem, f64, f64) 
     (p, beta, a)
 }
 
-/// The edges of the stick zone at the cycle's peak (the virgin loading to Q₀), mm, each
-/// fitted through the three outermost stick points on its side: the margin μp − |q| vanishes
-/// there like the square root of the distance, so that its square is a line through them.
-fn fe_stick_edges(contact: &wearfem::jobs::fretting::FrettingContact) -> (f64, f64) {
-    let x = contact.setup.x();
-    let (peak, forces, area) = (
-        &contact.cycle.states[0],
-        &contact.cycle_forces[0],
-        &contact.setup.area,
-    );
-    let friction = contact.setup.settings.friction;
-    let mut stick: Vec<usize> = (0..x.len()).filter(|&i| peak.stick[i]).collect();
-    stick.sort_by(|&i, &j| x[i].total_cmp(&x[j]));
-    // In pressure: the points' forces carry their quadrature weights.
-    let margin_squared =
-        |i: usize| ((friction * forces[i] - peak.force[i].abs()) / area[i]).powi(2);
-    let edge = |points: &[usize]| {
-        let n = points.len() as f64;
-        let (sx, sy, sxx, sxy) = points.iter().fold((0.0, 0.0, 0.0, 0.0), |s, &i| {
-            let (u, v) = (x[i], margin_squared(i));
-            (s.0 + u, s.1 + v, s.2 + u * u, s.3 + u * v)
-        });
-        let slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-        -(sy - slope * sx) / n / slope
-    };
-    let k = stick.len();
-    (edge(&stick[..3]), edge(&stick[k - 3..]))
-}
-
 /// A pad of E₁ = 5000 MPa (β = 0.272) under 0.5 and 0.7 μP, and of 70 000 MPa (β = 0.138)
 /// under 0.5 μP, at p = 10 (the example's) and 14: the stick zone moves along +x, the way Q
 /// pushes the more compliant pad, as the half-planes' does.
@@ -70,7 +41,8 @@ fn fe_stick_edges(contact: &wearfem::jobs::fretting::FrettingContact) -> (f64, f
 /// against [−0.6435, 0.7811], [−0.4588, 0.6454] against [−0.4567, 0.6479], [−0.6749,
 /// 0.7487] against [−0.6742, 0.7421]; p = 14 within 0.0073 a of them. Bounds: each edge
 /// within 1 % of a (the bound for Cattaneo's edges; the reference's own scatter is
-/// 0.2 % of a, the FE edge fit's 0.3–0.7 % between degrees), the centre within 0.5 % of a
+/// 0.2 % of a, the FE edge fit's 0.3–0.7 % between degrees; the edges fitted through the
+/// three outermost stick points on each side, `FrettingContact::peak_stick_edges`), the centre within 0.5 % of a
 /// against offsets of 3.4–9.6 % of a (so that the coupling's effect is checked to a
 /// tenth or better). At p = 8 and 12 the left edge under 0.7 μP is 3.5 % and 1.4 % of a
 /// off (the other edges within 0.7 %): that edge lies 1.7 point spacings from an element
@@ -81,7 +53,7 @@ fn the_coupled_stick_zone_moves_as_the_half_planes_does() {
         for (young_pad, ratio) in [(5000.0, 0.5), (5000.0, 0.7), (7.0e4, 0.5)] {
             let (p, beta, a) = dissimilar(young_pad, ratio, degree);
             let contact = wearfem::jobs::fretting::contact(&p).unwrap();
-            let (left, right) = fe_stick_edges(&contact);
+            let (left, right) = contact.peak_stick_edges().unwrap();
             let (left, right) = (left / a, right / a);
             let reference = half_plane::coupled_partial_slip(beta, 0.6, ratio, 800).unwrap();
             let centre = 0.5 * (left + right);

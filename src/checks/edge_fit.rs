@@ -20,6 +20,24 @@ pub fn square_root_edge(samples: impl IntoIterator<Item = (f64, f64)>) -> f64 {
     (-(sy - slope * sx) / count / slope).sqrt()
 }
 
+/// The edge (mm) of a zone on one side, where a margin d vanishes like the square root of the
+/// distance (d² linear in x near an edge that is not at the origin: an off-centre stick zone),
+/// from samples (x in mm, d in any unit) next to it: the least-squares line of d² against x,
+/// its zero. NaN for fewer than two distinct x.
+pub fn square_root_edge_one_sided(samples: impl IntoIterator<Item = (f64, f64)>) -> f64 {
+    let (mut sx, mut sy, mut sxx, mut sxy, mut count) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for (x, d) in samples {
+        let v = d * d;
+        sx += x;
+        sy += v;
+        sxx += x * x;
+        sxy += x * v;
+        count += 1.0;
+    }
+    let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+    -(sy - slope * sx) / count / slope
+}
+
 #[cfg(test)]
 mod tests {
     #[test]
@@ -27,5 +45,12 @@ mod tests {
         // Exact samples of 3 √(1 − x²/4): the line is exact, c = 2 to round-off.
         let samples = [0.3, 0.9, 1.2, 1.7].map(|x: f64| (x, 3.0 * (1.0 - x * x / 4.0).sqrt()));
         assert!((super::square_root_edge(samples) - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_one_sided_square_root_gives_its_edge() {
+        // Exact samples of 2 √(0.7 − x) below x = 0.7: d² is a line, its zero 0.7.
+        let samples = [0.5, 0.6, 0.65].map(|x: f64| (x, 2.0 * (0.7 - x).sqrt()));
+        assert!((super::square_root_edge_one_sided(samples) - 0.7).abs() < 1e-12);
     }
 }

@@ -122,6 +122,35 @@ pub struct FrettingContact {
     pub seconds: f64,
 }
 
+impl FrettingContact {
+    /// The edges (mm) of the stick zone at the cycle's peak (the virgin loading to the
+    /// amplitude), each between the points, fitted through the three outermost stick points
+    /// on its side: the margin μp − |q| vanishes there like the square root of the distance
+    /// ([`crate::checks::edge_fit::square_root_edge_one_sided`]). None with fewer than three
+    /// stick points.
+    pub fn peak_stick_edges(&self) -> Option<(f64, f64)> {
+        let x = self.setup.x();
+        let (peak, forces, area) = (
+            &self.cycle.states[0],
+            &self.cycle_forces[0],
+            &self.setup.area,
+        );
+        let friction = self.setup.settings.friction;
+        let mut stick: Vec<usize> = (0..x.len()).filter(|&i| peak.stick[i]).collect();
+        if stick.len() < 3 {
+            return None;
+        }
+        stick.sort_by(|&i, &j| x[i].total_cmp(&x[j]));
+        // In pressure: the points' forces carry their quadrature weights.
+        let sample = |&i: &usize| (x[i], (friction * forces[i] - peak.force[i].abs()) / area[i]);
+        let edge = |points: &[usize]| {
+            crate::checks::edge_fit::square_root_edge_one_sided(points.iter().map(sample))
+        };
+        let k = stick.len();
+        Some((edge(&stick[..3]), edge(&stick[k - 3..])))
+    }
+}
+
 /// The normal solve, then one periodic fretting cycle.
 pub fn contact(problem: &Problem) -> Result<FrettingContact, JobError> {
     let setup = FrettingSetup::new(problem)?;

@@ -281,6 +281,7 @@ pub fn run(options: &Options) -> Result<Report, ValidateError> {
     partial_slip_cases::cattaneo(&mut checks)?;
     fretting_cases::cycle_energy(&mut checks)?;
     fretting_cases::final_state(&mut checks)?;
+    fretting_cases::dissimilar_stick_zone(&mut checks)?;
     if let Some((id, value)) = &options.perturb {
         let check = checks
             .iter_mut()

@@ -85,3 +85,36 @@ pub fn final_state(checks: &mut Checks) -> Outcome {
     );
     Ok(())
 }
+
+/// `fretting-dissimilar` (a soft pad on steel, Dundurs' β = 0.272, Q₀ = 0.5 μP): the centre
+/// of the coupled stick zone at the peak against the independent half-plane solution
+/// ([`super::half_plane`], 800 panels) of the same loading; Cattaneo's uncoupled zone would be
+/// centred. The bound is tests/fretting_dissimilar.rs's: 0.5 % of a.
+pub fn dissimilar_stick_zone(checks: &mut Checks) -> Outcome {
+    let name = "fretting-dissimilar";
+    let p = super::cases::problem(name, &[("stages = 16", "stages = 1")])?;
+    let contact = crate::jobs::fretting::contact(&p).map_err(|e| fail(name, e))?;
+    let (left, right) = contact
+        .peak_stick_edges()
+        .ok_or_else(|| fail(name, "fewer than three stick points at the peak"))?;
+    let (radius, load, poisson) = (10.0f64, 2.6945, 0.3);
+    let e_star = 1.0 / ((1.0 - poisson * poisson) * (1.0 / 5000.0 + 1.0 / 2.0e5));
+    let a = (4.0 * load * radius / (PI * e_star)).sqrt();
+    let shear = |e: f64| e / (2.0 * (1.0 + poisson));
+    let kappa = 3.0 - 4.0 * poisson;
+    let (compliant, stiff) = ((kappa - 1.0) / shear(5000.0), (kappa - 1.0) / shear(2.0e5));
+    let beta = (compliant - stiff) / ((kappa + 1.0) / shear(5000.0) + (kappa + 1.0) / shear(2.0e5));
+    let reference =
+        super::half_plane::coupled_partial_slip(beta, 0.6, 0.5, 800).map_err(|e| fail(name, e))?;
+    push(
+        checks,
+        "fretting.dissimilar_stick_centre",
+        "fretting-dissimilar (β = 0.272, Q₀ = 0.5 μP, coupled): the stick zone's centre at the peak",
+        "mm",
+        reference.stick_centre() * a,
+        "Nowell–Hills–Sackfield's two half-planes, solved by panels (validate::half_plane)",
+        0.5 * (left + right),
+        Bound::Absolute(0.005 * a),
+    );
+    Ok(())
+}
