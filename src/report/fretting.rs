@@ -5,7 +5,7 @@
 //!   figures loop and traction.
 //! - `run`: summary.json, history.csv (one row per step: cycles, the stick zone, the energy
 //!   per cycle, the deepest wear), profiles.csv (pressure and wear at the start, at each
-//!   recorded cycle and at the end), loop.csv of the first and the last cycle, and the figures
+//!   recorded cycle and at the end), loop.csv (the loop of each of those cycles), and the figures
 //!   scar (the worn depth at the recorded cycles: the W-shaped scar), pressure, stick_zone and
 //!   loop.
 //! - `steady`: summary.json, final.csv and the figures final (pressure) and scar.
@@ -26,29 +26,31 @@ fn figure_error(dir: &Path) -> impl Fn(String) -> OutputError + '_ {
     }
 }
 
-fn loop_rows(cycle: &FrettingCycle, label: &str) -> Vec<Vec<Value>> {
-    let stages = cycle.stages() as f64;
-    cycle
-        .states
-        .iter()
-        .enumerate()
-        .map(|(k, s)| {
+/// loop.csv's rows of one cycle's loop ((shift mm, load N) per state) after `cycles` cycles.
+fn loop_rows(cycles: f64, cycle_loop: &[(f64, f64)]) -> Vec<Vec<Value>> {
+    let stages = ((cycle_loop.len() - 1) / 2).max(1) as f64;
+    (cycle_loop.iter().enumerate())
+        .map(|(k, (shift, load))| {
             vec![
-                json!(label),
+                json!(cycles),
                 json!(std::f64::consts::PI * k as f64 / stages),
-                json!(s.load),
-                json!(s.shift),
+                json!(load),
+                json!(shift),
             ]
         })
         .collect()
 }
 
-fn loop_points(cycle: &FrettingCycle) -> Vec<(f64, f64)> {
-    cycle
-        .states
-        .iter()
-        .map(|s| (1e3 * s.shift, s.load))
+/// The loop's points for a figure: shift in µm, load in N.
+fn loop_points(cycle_loop: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    (cycle_loop.iter())
+        .map(|(shift, load)| (1e3 * shift, *load))
         .collect()
+}
+
+/// A cycle's loop, (shift mm, load N) per state.
+fn loop_of(cycle: &FrettingCycle) -> Vec<(f64, f64)> {
+    cycle.states.iter().map(|s| (s.shift, s.load)).collect()
 }
 
 /// Write `contact`'s files into `dir`.
@@ -94,7 +96,7 @@ pub fn write_contact(
         dir,
         "loop.csv",
         &["cycle", "phase_rad", "load_N", "shift_mm"],
-        &loop_rows(cycle, "first"),
+        &loop_rows(0.0, &loop_of(cycle)),
     )?;
     let name = problem_name(&problem.file);
     let e = figure_error(dir);
@@ -105,7 +107,7 @@ pub fn write_contact(
         "tangential force Q (N)",
         &[Series {
             label: "Q against δ",
-            points: loop_points(cycle),
+            points: loop_points(&loop_of(cycle)),
         }],
     )
     .map_err(&e)?;
@@ -233,8 +235,9 @@ pub fn write_run(dir: &Path, problem: &Problem, run: &FrettingRun) -> Result<(),
         ],
         &rows,
     )?;
-    let mut rows = loop_rows(&h.first_cycle, "first");
-    rows.extend(loop_rows(&h.last_cycle, "last"));
+    let rows: Vec<Vec<Value>> = (h.records.iter())
+        .flat_map(|r| loop_rows(r.cycles, &r.cycle_loop))
+        .collect();
     write_csv(
         dir,
         "loop.csv",
@@ -321,21 +324,18 @@ fn run_figures(dir: &Path, problem: &Problem, run: &FrettingRun) -> Result<(), S
             points: width,
         }],
     )?;
+    let loops: Vec<Series> = (h.records.iter().zip(&labels))
+        .map(|(r, label)| Series {
+            label: label.as_str(),
+            points: loop_points(&r.cycle_loop),
+        })
+        .collect();
     line_plot(
         &dir.join("loop.svg"),
-        &format!("{name}: the fretting loop"),
+        &format!("{name}: the fretting loop of each recorded cycle"),
         "shift δ (µm)",
         "tangential force Q (N)",
-        &[
-            Series {
-                label: "first cycle",
-                points: loop_points(&h.first_cycle),
-            },
-            Series {
-                label: "last cycle",
-                points: loop_points(&h.last_cycle),
-            },
-        ],
+        &loops,
     )
 }
 

@@ -91,6 +91,9 @@ pub struct FrettingProfiles {
     pub slip_amplitude: Vec<f64>,
     /// Whether each point sticks through the cycle.
     pub never_slips: Vec<bool>,
+    /// The fretting loop of the cycle: the shift (mm) and the tangential load (N) at the
+    /// peak and after each of its 2n stages.
+    pub cycle_loop: Vec<(f64, f64)>,
 }
 
 /// Why a fretting run stopped early.
@@ -327,6 +330,12 @@ fn profiles(cycles: f64, state: &State) -> FrettingProfiles {
         wear: state.wear.clone(),
         slip_amplitude: state.cycle.slip_amplitude.clone(),
         never_slips: state.cycle.never_slips.clone(),
+        cycle_loop: state
+            .cycle
+            .states
+            .iter()
+            .map(|s| (s.shift, s.load))
+            .collect(),
     }
 }
 
