@@ -29,10 +29,10 @@
 //! From the surface displacements of a half-plane (Johnson, Contact Mechanics, eq. 2.25: with
 //! z into the solid, u_z′ = −(2(1−ν²)/πE)∫p/(x−s) + ((1−2ν)(1+ν)/E) q and
 //! u_x′ = −((1−2ν)(1+ν)/E) p − (2(1−ν²)/πE)∫q/(x−s)), applied to each body with its own
-//! traction (p, q on body 1; p, −q on body 2), and with H[f](x) = (1/π) PV∫ f(s)/(x − s) ds:
+//! traction (p, q on body 1; p, −q on body 2), and with H(f)(x) = (1/π) PV∫ f(s)/(x − s) ds:
 //!
-//! * contact (gap closed): h′(x)/A = H[p](x) − β q(x);
-//! * tangential: g′(x)/A = H[q](x) + β p(x), g = u_x2 − u_x1 (body 2 against body 1); body 1's
+//! * contact (gap closed): h′(x)/A = H(p)(x) − β q(x);
+//! * tangential: g′(x)/A = H(q)(x) + β p(x), g = u_x2 − u_x1 (body 2 against body 1); body 1's
 //!   slip against body 2 is s = −g + a rigid shift δ.
 //!
 //! Signs checked from first principles: a normal load draws the surface towards itself (the
@@ -41,7 +41,7 @@
 //! rises towards body 2 at +x; body 2, dragged along +x, sinks at +x. If body 1 is the more
 //! compliant (β > 0) the first wins: the interference grows at +x and the pressure moves to
 //! +x, the direction in which the more compliant body moves relative to the other. In full
-//! sliding (q = −μp) the contact equation is H[p] + βμ p = x/(RA), whose bounded solution
+//! sliding (q = −μp) the contact equation is H(p) + βμ p = x/(RA), whose bounded solution
 //! (Bufler; Plemelj with X(z) = (z − b)^(1/2−γ)(z + b)^(1/2+γ)) is, with t = x − e,
 //!
 //!   p = p₀ cos(πγ) (b − t)^(1/2−γ) (b + t)^(1/2+γ) / a,  tan(πγ) = βμ,
