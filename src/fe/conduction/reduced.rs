@@ -62,6 +62,7 @@
 
 use super::blocks::{BlockOperator, PairedMatrices};
 use super::transient::{SparseFactor, SparseSymbolic};
+use faer::sparse::SparseColMatRef;
 use faer::{Mat, MatRef, Side};
 
 /// The heat problem's operators as the reduction needs them: K and C as blocks (for products
@@ -210,7 +211,7 @@ fn krylov_basis(
     inputs: MatRef<'_, f64>,
     shifts: &[f64],
     extra: &[Vec<f64>],
-) -> Result<Mat<f64>, ReductionError> {
+) -> Result<Basis, ReductionError> {
     let (k, c) = (&operators.matrices.first, &operators.matrices.second);
     let n = k.nrows();
     let symbolic = SparseSymbolic::new(k, operators.symmetric)
@@ -222,14 +223,17 @@ fn krylov_basis(
         operators.capacity,
         Mat::from_fn(n, extra.len(), |i, j| extra[j][i]),
     )?;
-    // One matrix for every shift, its values overwritten (K + σC shares K's pattern), rather
-    // than a copy of the pattern per shift.
-    let mut matrix = k.clone();
+    // One array of values for every shift's K + σC, on K's pattern (shared by C), and one
+    // factor refilled for every shift: allocated once, their memory is zeroed by the kernel
+    // once, not per shift.
+    let mut values = vec![0.0; k.val().len()];
+    let mut previous: Option<SparseFactor> = None;
     for &shift in shifts {
-        for ((m, k), c) in matrix.val_mut().iter_mut().zip(k.val()).zip(c.val()) {
+        for ((m, k), c) in values.iter_mut().zip(k.val()).zip(c.val()) {
             *m = k + shift * c;
         }
-        let factor = SparseFactor::with_symbolic(&symbolic, &matrix)
+        let matrix = SparseColMatRef::new(k.symbolic(), &values);
+        let factor = SparseFactor::refactorise(previous.take(), &symbolic, matrix)
             .ok_or(ReductionError::NotDefinite { shift })?;
         let mut w = inputs.to_owned();
         factor.solve_in_place(&mut w);
@@ -244,8 +248,9 @@ fn krylov_basis(
         } else {
             basis.add(operators.capacity, w)?;
         }
+        previous = Some(factor);
     }
-    Ok(basis.view().to_owned())
+    Ok(basis)
 }
 
 impl ReducedModel {
@@ -259,11 +264,13 @@ impl ReducedModel {
         extra: &[Vec<f64>],
     ) -> Result<ReducedModel, ReductionError> {
         // V is C-orthonormal; the eigenvectors Q of VᵀKV make Φ = V Q K-orthogonal too.
-        let v = krylov_basis(operators, inputs, shifts, extra)?;
-        let reduced = v.transpose() * operators.conductivity.apply(v.as_ref());
+        // V is read in place (an owned copy would be N r more values of fresh memory).
+        let basis = krylov_basis(operators, inputs, shifts, extra)?;
+        let v = basis.view();
+        let reduced = v.transpose() * operators.conductivity.apply(v);
         if !operators.symmetric {
             return Ok(ReducedModel {
-                modes: v,
+                modes: v.to_owned(),
                 rates: Vec::new(),
                 coupling: Some(reduced),
             });
@@ -278,7 +285,7 @@ impl ReducedModel {
             .map(|i| if s[i] < 1e-13 * largest { 0.0 } else { s[i] })
             .collect();
         Ok(ReducedModel {
-            modes: &v * eigen.U(),
+            modes: v * eigen.U(),
             rates,
             coupling: None,
         })

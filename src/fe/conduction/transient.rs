@@ -13,7 +13,7 @@ use faer::sparse::linalg::cholesky::{
     SymmetricOrdering,
 };
 use faer::sparse::linalg::SupernodalThreshold;
-use faer::sparse::{SparseColMat, Triplet};
+use faer::sparse::{SparseColMat, SparseColMatRef, Triplet};
 use faer::{Conj, Mat, Par, Side};
 use std::sync::Arc;
 
@@ -47,37 +47,52 @@ impl SpdSymbolic {
 pub struct SpdFactor {
     symbolic: Arc<SymbolicCholesky<usize>>,
     values: Vec<f64>,
+    /// The numeric factorisation's scratch (the matrix permuted, the supernodes' updates),
+    /// kept with the factor so that refactorising the same pattern ([`SpdFactor::refactorise`],
+    /// once per shift of the heat problem's reduction) allocates nothing: fresh memory is
+    /// zeroed by the kernel page by page before it is used.
+    scratch: MemBuffer,
 }
 
 impl SpdFactor {
     /// Factorise `a` (both triangles stored; the lower one is read); None if it is not
     /// positive definite.
     pub fn new(a: &SparseColMat<usize, f64>) -> Option<SpdFactor> {
-        Self::with_symbolic(&SpdSymbolic::new(a)?, a)
+        Self::with_symbolic(&SpdSymbolic::new(a)?, a.as_ref())
     }
 
     /// Factorise `a`, whose pattern is the one `symbolic` was made for.
     pub fn with_symbolic(
         symbolic: &SpdSymbolic,
-        a: &SparseColMat<usize, f64>,
+        a: SparseColMatRef<'_, usize, f64>,
     ) -> Option<SpdFactor> {
         let symbolic = Arc::clone(&symbolic.symbolic);
-        let mut values = vec![0.0; symbolic.len_val()];
-        let mut buffer = MemBuffer::new(
+        let scratch = MemBuffer::new(
             symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default()),
         );
-        symbolic
+        let mut factor = SpdFactor {
+            values: vec![0.0; symbolic.len_val()],
+            symbolic,
+            scratch,
+        };
+        factor.refactorise(a).then_some(factor)
+    }
+
+    /// Factorise `a`, of the pattern this factor was made for, into this factor's storage;
+    /// false if it is not positive definite (the factor is then unusable). The supernodal
+    /// factorisation (forced by [`SpdSymbolic::new`]) clears the values it writes first.
+    pub fn refactorise(&mut self, a: SparseColMatRef<'_, usize, f64>) -> bool {
+        self.symbolic
             .factorize_numeric_llt(
-                &mut values,
-                a.as_ref(),
+                &mut self.values,
+                a,
                 Side::Lower,
                 LltRegularization::default(),
                 Par::Seq,
-                MemStack::new(&mut buffer),
+                MemStack::new(&mut self.scratch),
                 Default::default(),
             )
-            .ok()?;
-        Some(SpdFactor { symbolic, values })
+            .is_ok()
     }
 
     /// Solve in place for every column of `rhs`.
@@ -149,21 +164,37 @@ pub enum SparseFactor {
 impl SparseFactor {
     /// Factorise `a`, `symmetric` or not; None if it fails (not positive definite, singular).
     pub fn new(a: &SparseColMat<usize, f64>, symmetric: bool) -> Option<SparseFactor> {
-        Self::with_symbolic(&SparseSymbolic::new(a, symmetric)?, a)
+        Self::with_symbolic(&SparseSymbolic::new(a, symmetric)?, a.as_ref())
     }
 
     /// Factorise `a`, whose pattern is the one `symbolic` was made for.
     pub fn with_symbolic(
         symbolic: &SparseSymbolic,
-        a: &SparseColMat<usize, f64>,
+        a: SparseColMatRef<'_, usize, f64>,
     ) -> Option<SparseFactor> {
         match symbolic {
             SparseSymbolic::Spd(s) => SpdFactor::with_symbolic(s, a).map(SparseFactor::Spd),
             SparseSymbolic::General(s) => {
-                faer::sparse::linalg::solvers::Lu::try_new_with_symbolic(s.clone(), a.as_ref())
+                faer::sparse::linalg::solvers::Lu::try_new_with_symbolic(s.clone(), a)
                     .ok()
                     .map(|lu| SparseFactor::General(Box::new(lu)))
             }
+        }
+    }
+
+    /// Factorise `a`, whose pattern is the one `symbolic` was made for, in the storage of
+    /// `previous` (a factor of the same pattern) when it is a Cholesky factor: a sequence of
+    /// shifts K + σC then allocates the factor and its scratch once.
+    pub fn refactorise(
+        previous: Option<SparseFactor>,
+        symbolic: &SparseSymbolic,
+        a: SparseColMatRef<'_, usize, f64>,
+    ) -> Option<SparseFactor> {
+        match previous {
+            Some(SparseFactor::Spd(mut factor)) => {
+                factor.refactorise(a).then_some(SparseFactor::Spd(factor))
+            }
+            _ => Self::with_symbolic(symbolic, a),
         }
     }
 

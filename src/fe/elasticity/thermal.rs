@@ -44,7 +44,12 @@ fn coupling_matrix(
         .analysis
         .thickness()
         .expect("contact, and with it heat, is refused for axisymmetric bodies");
-    let mut f = Mat::<f64>::zeros(2 * n, n);
+    // F = Σ_q (∇N_a s w)_q N_b(q): the gradients' column (2n values) and the values' column
+    // (n) of each quadrature point, then one dense product; summed entry by entry, with
+    // the matrix's strided writes, it cost as much as the rest of the heat's elastic set-up.
+    let points = nq * nq;
+    let mut gradients = Mat::<f64>::zeros(2 * n, points);
+    let mut values = Mat::<f64>::zeros(n, points);
     for iy in 0..nq {
         for ix in 0..nq {
             let q = iy * nq + ix;
@@ -55,17 +60,13 @@ fn coupling_matrix(
             for a in 0..n {
                 let idx = a * tab.n_points + q;
                 let (nxi, neta) = (tab.d_xi[idx], tab.d_eta[idx]);
-                let dx = (nxi * dxi_dx + neta * deta_dx) * s[0] * w;
-                let dz = (nxi * dxi_dz + neta * deta_dz) * s[1] * w;
-                for b in 0..n {
-                    let nb = tab.values[b * tab.n_points + q];
-                    f[(2 * a, b)] += dx * nb;
-                    f[(2 * a + 1, b)] += dz * nb;
-                }
+                gradients[(2 * a, q)] = (nxi * dxi_dx + neta * deta_dx) * s[0] * w;
+                gradients[(2 * a + 1, q)] = (nxi * dxi_dz + neta * deta_dz) * s[1] * w;
+                values[(a, q)] = tab.values[idx];
             }
         }
     }
-    f
+    gradients * values.transpose()
 }
 
 impl ElasticBody {

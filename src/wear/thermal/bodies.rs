@@ -4,7 +4,7 @@
 
 use super::counterface::counterface_flow;
 use super::{Sliding, ThermalBodies, ThermalError};
-use crate::conduction::{ConductionSpec, EdgePiece};
+use crate::conduction::{ConductionBody, ConductionSpec, EdgePiece};
 use crate::contact::CondensedContact;
 use crate::elasticity::ElasticBody;
 
@@ -172,4 +172,20 @@ fn chain_of(
     // Pieces the walk did not reach (an edge in several lines) are appended as they are.
     chain.extend(left.into_iter().map(|(e, l)| (e, l, false)));
     (chain, closed)
+}
+
+/// v_max L / (2 a) of body `b` at the contact (see [`super::ThermalInfo::peclet`]).
+pub(super) fn peclet(input: &ThermalBodies<'_>, body: &ConductionBody, b: usize) -> f64 {
+    let speed = match input.sliding {
+        Sliding::Reciprocating { amplitude, omega } => amplitude * omega,
+        Sliding::Monotonic { speed, .. } => speed,
+    };
+    let length: f64 = input.contact.points.weight.iter().sum();
+    let element = input.settings.bodies[b]
+        .contact_edge
+        .first()
+        .map_or(0, |&(e, _)| e);
+    let material = body.mesh.elements.get(element).map_or(0, |e| e.material);
+    let diffusivity = input.settings.materials[material].diffusivity();
+    speed * length / (2.0 * diffusivity)
 }
