@@ -65,7 +65,8 @@ pub(crate) fn run(p: &Problem, out: &Path, steps: Option<usize>, vtk: bool) -> R
     Ok(())
 }
 
-/// `wearfem steady` on a fretting problem: the final state of partial slip.
+/// `wearfem steady` on a fretting problem: the final state of partial slip, or the periodic
+/// steady state of gross slip.
 pub(crate) fn steady(p: &Problem, out: &Path, vtk: bool) -> Result<(), Failure> {
     refuse_vtk(p, vtk)?;
     let result = wearfem::jobs::fretting::steady(p)?;
@@ -77,8 +78,13 @@ pub(crate) fn steady(p: &Problem, out: &Path, vtk: bool) -> Result<(), Failure> 
         .map(|i| x[i])
         .collect();
     println!(
-        "{}: the final state of partial slip: contact {:.4} … {:.4} mm, peak pressure {:.4} MPa, deepest wear {:.4e} mm, {} iterations, {:.3} s → {}",
+        "{}: {}: contact {:.4} … {:.4} mm, peak pressure {:.4} MPa, deepest wear {:.4e} mm, {} iterations, {:.3} s → {}",
         p.file,
+        if s.gross_slip {
+            "the periodic steady state of gross slip"
+        } else {
+            "the final state of partial slip"
+        },
         touching.first().copied().unwrap_or(f64::NAN),
         touching.last().copied().unwrap_or(f64::NAN),
         s.pressure.iter().fold(0.0f64, |m, v| m.max(*v)),

@@ -275,7 +275,7 @@ pub struct FrettingSteady {
 
 /// The final worn state of `problem` in partial slip, directly.
 pub fn steady(problem: &Problem) -> Result<FrettingSteady, JobError> {
-    use crate::steady_state::fretting::{final_state, FinalStateError};
+    use crate::steady_state::fretting::{final_state, gross_slip_steady, FinalStateError};
     let setup = FrettingSetup::new(problem)?;
     if setup.settings.coupled {
         return Err(problem.error("fretting.coupled", "the final state of the coupled problem is not built: its worn points must stay open at every instant of the cycle, whose shear moves the pressure (`wearfem run` integrates it). fretting.coupled = false gives Cattaneo's uncoupled final state (exact for one material in the half-space limit); the coupled problem is the default when the bodies' materials differ").into());
@@ -284,12 +284,33 @@ pub fn steady(problem: &Problem) -> Result<FrettingSteady, JobError> {
     let mut solver = ContactSolver::new(&setup.contact, method(problem)?);
     let tangent_x = setup.tangent_x();
     let mut model = setup.model(problem, &tangent_x)?;
-    let state = final_state(&mut solver, &setup.contact, model.as_mut())
+    let state = match final_state(&mut solver, &setup.contact, model.as_mut()) {
+        // Nothing sticks through the cycle: the periodic steady state of gross slip.
+        Err(FinalStateError::GrossSlip) => {
+            let wear = setup.settings.wear.as_ref().ok_or_else(|| {
+                problem.error(
+                    "wear",
+                    "this fretting problem is in gross slip, whose steady state needs the wear laws: give [wear] (wear.body1, wear.body2)",
+                )
+            })?;
+            let laws: Vec<(f64, f64, f64)> =
+                wear.laws.iter().map(|(_, l)| (l.beta, l.a, l.b)).collect();
+            gross_slip_steady(
+                &mut solver,
+                &setup.contact,
+                model.as_mut(),
+                &laws,
+                wear.omega,
+            )
+        }
+        other => other,
+    }
     .map_err(|e| match e {
         FinalStateError::Cycle(e) => cycle_error(problem, &setup.settings, e),
         FinalStateError::NoContact => no_contact(problem),
-        FinalStateError::GrossSlip => JobError::Problem(problem.error("fretting.amplitude", format!("{}: `wearfem run` integrates it (a steady state of gross-slip fretting is not built yet)", FinalStateError::GrossSlip))),
-        other => JobError::Compute(format!("the final state: {other}; nothing was written")),
+        FinalStateError::PlateMotion => JobError::Problem(problem.error("plate.motion", e.to_string())),
+        FinalStateError::GrossSlipLost => JobError::Problem(problem.error("fretting.amplitude", e.to_string())),
+        other => JobError::Compute(format!("the steady state: {other}; nothing was written")),
     });
     drop(model);
     let state = state?;
@@ -395,7 +416,7 @@ impl FrettingSteady {
         json!({
             "title": problem.spec.title,
             "wearfem_version": crate::VERSION,
-            "status": "final_state",
+            "status": if s.gross_slip { "gross_slip_steady_state" } else { "final_state" },
             "points": setup.contact.len(),
             "iterations": s.iterations,
             "peak_pressure_MPa": number(s.pressure.iter().fold(0.0f64, |m, p| m.max(*p))),

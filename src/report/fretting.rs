@@ -373,7 +373,15 @@ pub fn write_steady(
         ],
         &rows,
     )?;
-    let (lo, hi) = shown(&x, &s.initial_pressure);
+    // Gross slip's steady contact spreads beyond the first one: show all of it.
+    let (lo, hi) = shown(
+        &x,
+        if s.gross_slip {
+            &s.pressure
+        } else {
+            &s.initial_pressure
+        },
+    );
     let within = |values: &[f64], scale: f64| -> Vec<(f64, f64)> {
         (0..x.len())
             .filter(|&i| x[i] >= lo && x[i] <= hi)
@@ -384,7 +392,14 @@ pub fn write_steady(
     let e = figure_error(dir);
     line_plot(
         &dir.join("final.svg"),
-        &format!("{name}: the final state of partial slip"),
+        &format!(
+            "{name}: {}",
+            if s.gross_slip {
+                "the steady state of gross slip"
+            } else {
+                "the final state of partial slip"
+            }
+        ),
         "x (mm)",
         "pressure (MPa)",
         &[
@@ -393,7 +408,11 @@ pub fn write_steady(
                 points: within(&s.initial_pressure, 1.0),
             },
             Series {
-                label: "final: the stick zone carries the load",
+                label: if s.gross_slip {
+                    "steady: every point worn at the plate's approach"
+                } else {
+                    "final: the stick zone carries the load"
+                },
                 points: within(&s.pressure, 1.0),
             },
         ],
@@ -401,11 +420,18 @@ pub fn write_steady(
     .map_err(&e)?;
     line_plot(
         &dir.join("scar.svg"),
-        &format!("{name}: the final scar (both bodies' wear)"),
+        &format!(
+            "{name}: the {} scar (both bodies' wear)",
+            if s.gross_slip { "steady" } else { "final" }
+        ),
         "x (mm)",
         "worn depth (µm, downwards)",
         &[Series {
-            label: "final state",
+            label: if s.gross_slip {
+                "steady state"
+            } else {
+                "final state"
+            },
             points: within(&s.shape, -1e3),
         }],
     )
