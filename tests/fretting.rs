@@ -137,7 +137,12 @@ fn gross_slip_under_displacement_control() {
     assert!(contact.cycle.never_slips.iter().all(|s| !s));
     // At the peak every loaded point slips at μP: the force is the limit, to round-off.
     assert!((contact.cycle.states[0].load - contact.limit).abs() < 1e-12 * contact.limit);
-    assert!(wearfem::jobs::fretting::steady(&p).unwrap().state.gross_slip);
+    assert!(
+        wearfem::jobs::fretting::steady(&p)
+            .unwrap()
+            .state
+            .gross_slip
+    );
 }
 
 fn wearfem(args: &[&str]) -> (i32, String) {
