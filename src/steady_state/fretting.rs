@@ -271,23 +271,7 @@ fn balanced_pressure(terms: &[Vec<(f64, f64)>], rho: &[f64], area: &[f64], load:
             .collect()
     };
     let carried = |p: &[f64]| (0..p.len()).map(|i| rho[i] * area[i] * p[i]).sum::<f64>();
-    // The carried load grows with the rate: bracket, then bisect (to round-off).
-    let (mut low, mut high) = (0.0, 1.0);
-    while carried(&at(high)) < load {
-        high *= 2.0;
-    }
-    for _ in 0..200 {
-        let mid = 0.5 * (low + high);
-        if carried(&at(mid)) < load {
-            low = mid;
-        } else {
-            high = mid;
-        }
-        if high - low <= 1e-15 * high {
-            break;
-        }
-    }
-    at(0.5 * (low + high))
+    at(increasing_root(|rate| carried(&at(rate)), load))
 }
 
 /// The pressure p ≥ 0 at which Σ c pᵇ over `terms` equals `wear` (the sum grows with p).
@@ -299,14 +283,19 @@ fn wear_inverse(terms: &[(f64, f64)], wear: f64) -> f64 {
             (wear / c).powf(1.0 / b)
         };
     }
-    let total = |p: f64| crate::wear::law::half_period_wear(terms, p);
+    increasing_root(|p| crate::wear::law::half_period_wear(terms, p), wear)
+}
+
+/// The x ≥ 0 at which `f` (increasing, f(0) ≤ `target`) reaches `target`: bracketed by
+/// doubling, then bisected to round-off.
+fn increasing_root(f: impl Fn(f64) -> f64, target: f64) -> f64 {
     let (mut low, mut high) = (0.0, 1.0);
-    while total(high) < wear {
+    while f(high) < target && high < f64::MAX / 4.0 {
         high *= 2.0;
     }
     for _ in 0..200 {
         let mid = 0.5 * (low + high);
-        if total(mid) < wear {
+        if f(mid) < target {
             low = mid;
         } else {
             high = mid;
