@@ -273,7 +273,8 @@ pub struct FrettingSteady {
     pub seconds: f64,
 }
 
-/// The final worn state of `problem` in partial slip, directly.
+/// The final worn state of `problem` in partial slip, directly; in gross slip (nothing sticks
+/// through the cycle) the periodic steady state.
 pub fn steady(problem: &Problem) -> Result<FrettingSteady, JobError> {
     use crate::steady_state::fretting::{final_state, gross_slip_steady, FinalStateError};
     let setup = FrettingSetup::new(problem)?;
