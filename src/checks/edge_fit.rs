@@ -7,17 +7,21 @@
 /// c (mm) from samples (x in mm, d in any unit) inside the zone; NaN for fewer than two
 /// distinct x², or a line that does not fall to zero at positive x².
 pub fn square_root_edge(samples: impl IntoIterator<Item = (f64, f64)>) -> f64 {
-    let (mut sx, mut sy, mut sxx, mut sxy, mut count) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for (x, d) in samples {
-        let (u, v) = (x * x, d * d);
-        sx += u;
-        sy += v;
-        sxx += u * u;
-        sxy += u * v;
+    line_zero(samples.into_iter().map(|(x, d)| (x * x, d * d))).sqrt()
+}
+
+/// Where the least-squares line through (u, v) reaches v = 0.
+fn line_zero(points: impl Iterator<Item = (f64, f64)>) -> f64 {
+    let (mut su, mut sv, mut suu, mut suv, mut count) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for (u, v) in points {
+        su += u;
+        sv += v;
+        suu += u * u;
+        suv += u * v;
         count += 1.0;
     }
-    let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
-    (-(sy - slope * sx) / count / slope).sqrt()
+    let slope = (count * suv - su * sv) / (count * suu - su * su);
+    -(sv - slope * su) / count / slope
 }
 
 /// The edge (mm) of a zone on one side, where a margin d vanishes like the square root of the
@@ -25,17 +29,7 @@ pub fn square_root_edge(samples: impl IntoIterator<Item = (f64, f64)>) -> f64 {
 /// from samples (x in mm, d in any unit) next to it: the least-squares line of d² against x,
 /// its zero. NaN for fewer than two distinct x.
 pub fn square_root_edge_one_sided(samples: impl IntoIterator<Item = (f64, f64)>) -> f64 {
-    let (mut sx, mut sy, mut sxx, mut sxy, mut count) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for (x, d) in samples {
-        let v = d * d;
-        sx += x;
-        sy += v;
-        sxx += x * x;
-        sxy += x * v;
-        count += 1.0;
-    }
-    let slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
-    -(sy - slope * sx) / count / slope
+    line_zero(samples.into_iter().map(|(x, d)| (x, d * d)))
 }
 
 #[cfg(test)]

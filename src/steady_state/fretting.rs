@@ -91,17 +91,9 @@ pub fn final_state(
             .map(|(cycle, _)| cycle)
             .map_err(FinalStateError::Cycle)
     };
-    solver.set_compliance(&vec![0.0; n]);
     let g0 = &contact.points.initial_gap;
     let mut out = ContactSolution::default();
-    let info = solver.solve_into(g0, Direction::Plus, &mut out);
-    if info.status != Status::Solved {
-        return Err(FinalStateError::ContactSolve(info.complementarity));
-    }
-    let initial_pressure = out.pressure.clone();
-    if initial_pressure.iter().all(|p| *p <= 0.0) {
-        return Err(FinalStateError::NoContact);
-    }
+    let initial_pressure = unworn_pressure(solver, contact, &mut out)?;
     let first_cycle = cycle_of(&initial_pressure, &vec![0.0; n])?;
     let mut stick: Vec<bool> = (0..n)
         .map(|i| initial_pressure[i] > 0.0 && first_cycle.never_slips[i])
@@ -194,17 +186,9 @@ pub fn gross_slip_steady(
     if rho.iter().any(|r| *r <= 0.0) || load <= 0.0 {
         return Err(FinalStateError::PlateMotion);
     }
-    solver.set_compliance(&vec![0.0; n]);
     let g0 = &contact.points.initial_gap;
     let mut out = ContactSolution::default();
-    let info = solver.solve_into(g0, Direction::Plus, &mut out);
-    if info.status != Status::Solved {
-        return Err(FinalStateError::ContactSolve(info.complementarity));
-    }
-    let initial_pressure = out.pressure.clone();
-    if initial_pressure.iter().all(|p| *p <= 0.0) {
-        return Err(FinalStateError::NoContact);
-    }
+    let initial_pressure = unworn_pressure(solver, contact, &mut out)?;
     let forces = |p: &[f64]| -> Vec<f64> { p.iter().zip(&area).map(|(p, a)| p * a).collect() };
     let first_cycle = model
         .cycle(&forces(&initial_pressure), &vec![0.0; n])
@@ -260,6 +244,24 @@ pub fn gross_slip_steady(
         }
     }
     Err(FinalStateError::NotSettled(MAX_ITERATIONS))
+}
+
+/// The frictionless pressure (MPa) of the unworn contact; an error if it fails or presses
+/// nothing.
+fn unworn_pressure(
+    solver: &mut ContactSolver,
+    contact: &CondensedContact,
+    out: &mut ContactSolution,
+) -> Result<Vec<f64>, FinalStateError> {
+    solver.set_compliance(&vec![0.0; contact.len()]);
+    let info = solver.solve_into(&contact.points.initial_gap, Direction::Plus, out);
+    if info.status != Status::Solved {
+        return Err(FinalStateError::ContactSolve(info.complementarity));
+    }
+    if out.pressure.iter().all(|p| *p <= 0.0) {
+        return Err(FinalStateError::NoContact);
+    }
+    Ok(out.pressure.clone())
 }
 
 /// The pressures (MPa) at which each point's wear per cycle, Σ c pᵇ over its `terms`, is
