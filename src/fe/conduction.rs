@@ -46,6 +46,7 @@ mod balance;
 pub mod blocks;
 pub mod closed_forms;
 mod element;
+mod krylov;
 pub mod reduced;
 pub mod transient;
 pub use advection::Flow;

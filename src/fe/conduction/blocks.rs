@@ -11,8 +11,9 @@
 //! capacity and the conductivity are assembled on one pattern (their union), column by
 //! column, so that K + σC for any shift σ is a sum of two value arrays.
 
+use faer::linalg::matmul::matmul;
 use faer::sparse::{SparseColMat, SymbolicSparseColMat};
-use faer::{Mat, MatRef};
+use faer::{Accum, Mat, MatMut, MatRef, Par};
 use std::sync::Arc;
 
 /// A dense symmetric block: A += Pᵀ M P, P taking the unknowns (index, sign) of `unknowns`.
@@ -36,12 +37,30 @@ pub struct BlockOperator {
 impl BlockOperator {
     /// A V for the columns of `v` (size × r).
     pub fn apply(&self, v: MatRef<'_, f64>) -> Mat<f64> {
+        let mut out = Mat::<f64>::zeros(self.size, v.ncols());
+        self.add_applied(v, out.as_mut());
+        out
+    }
+
+    /// A V with the columns shared out among the threads: the same numbers as
+    /// [`Self::apply`] on any number of threads (the columns are split into a fixed number of
+    /// ranges), for the few hundred columns of the heat problem's reduction.
+    pub fn apply_parallel(&self, v: MatRef<'_, f64>) -> Mat<f64> {
+        let mut out = Mat::<f64>::zeros(self.size, v.ncols());
+        for_column_ranges(out.as_mut(), |range, part| {
+            self.add_applied(v.subcols(range.start, range.len()), part)
+        });
+        out
+    }
+
+    /// out += A V.
+    fn add_applied(&self, v: MatRef<'_, f64>, mut out: MatMut<'_, f64>) {
         let r = v.ncols();
-        let mut out = Mat::<f64>::zeros(self.size, r);
-        let mut gathered = Mat::<f64>::zeros(0, r);
+        let (mut gathered, mut product) = (Mat::<f64>::zeros(0, r), Mat::<f64>::zeros(0, r));
         for block in &self.blocks {
             let n = block.unknowns.len();
             gathered.resize_with(n, r, |_, _| 0.0);
+            product.resize_with(n, r, |_, _| 0.0);
             // Column by column: each column of V is contiguous, the block's rows a few
             // scattered entries of it (row by row, every entry was a cache miss).
             for c in 0..r {
@@ -50,15 +69,21 @@ impl BlockOperator {
                     gathered[(a, c)] = s * column[g];
                 }
             }
-            let product = &*block.matrix * &gathered;
+            matmul(
+                product.as_mut(),
+                Accum::Replace,
+                block.matrix.as_ref(),
+                gathered.as_ref(),
+                1.0,
+                Par::Seq,
+            );
             for c in 0..r {
-                let mut column = out.col_mut(c);
+                let mut column = out.as_mut().col_mut(c);
                 for (a, &(g, s)) in block.unknowns.iter().enumerate() {
                     column[g] += s * product[(a, c)];
                 }
             }
         }
-        out
     }
 
     /// A x for one vector.
@@ -75,6 +100,32 @@ impl BlockOperator {
         }
         y
     }
+}
+
+/// Column ranges of a product split among the threads: a fixed number, so that the split,
+/// and with it every number, is the same on any machine.
+const COLUMN_RANGES: usize = 8;
+
+/// Call `work` on ranges of `out`'s columns (a fixed number of them), on all threads.
+pub fn for_column_ranges<F>(out: MatMut<'_, f64>, work: F)
+where
+    F: Fn(std::ops::Range<usize>, MatMut<'_, f64>) + Sync,
+{
+    use rayon::prelude::*;
+    let width = out.ncols().div_ceil(COLUMN_RANGES).max(1);
+    let mut parts = Vec::new();
+    let mut rest = out;
+    let mut start = 0;
+    while rest.ncols() > 0 {
+        let take = width.min(rest.ncols());
+        let (head, tail) = rest.split_at_col_mut(take);
+        parts.push((start..start + take, head));
+        start += take;
+        rest = tail;
+    }
+    parts
+        .into_par_iter()
+        .for_each(|(range, part)| work(range, part));
 }
 
 /// Two operators of one size assembled as sparse matrices (both triangles) on their common

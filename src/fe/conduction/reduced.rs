@@ -22,8 +22,8 @@
 //! balance of the reduced model are those of the full one. The shifts between 1/(the
 //! slowest time of the problem) and 1/(the shortest step) place the reduced model's error
 //! where the run does not look: a response faster than the shortest step has decayed by the
-//! step's end. V is orthonormalised in the capacity inner product (twice, dropping
-//! directions whose Gram eigenvalue falls below 10⁻¹² of the largest: the blocks of nearby
+//! step's end. V is orthonormalised in the capacity inner product (twice, dropping the
+//! directions of a new block of which less than a thousandth is new: the blocks of nearby
 //! shifts are nearly parallel).
 //!
 //! # Cost
@@ -33,9 +33,10 @@
 //! grows with m (the blocks of all shifts together keep half to two thirds of their
 //! directions). So the caller keeps m small: the run's contact heat enters as a few smooth
 //! shapes along the contact, not one input per point (`wear::thermal::shapes`: 35 inputs
-//! and 202 modes instead of 67 and 305 on punch-b40-heat). C V is kept beside V, so that
-//! the projections are dense products and C is applied to a block twice instead of four
-//! times.
+//! and 202 modes instead of 67 and 305 on punch-b40-heat). The basis is built in
+//! the module `krylov`: the shifts factorised and solved two at a time (as many as there are
+//! threads), the dense products of the Gram–Schmidt, of VᵀKV and of the modes split by rows
+//! among the threads.
 //!
 //! # The modes and their exact integration
 //!
@@ -61,8 +62,7 @@
 //! each pair is computed once.
 
 use super::blocks::{BlockOperator, PairedMatrices};
-use super::transient::{SparseFactor, SparseSymbolic};
-use faer::sparse::SparseColMatRef;
+use super::krylov::{rows_product, symmetric_product, transpose_product, Basis};
 use faer::{Mat, MatRef, Side};
 
 /// The heat problem's operators as the reduction needs them: K and C as blocks (for products
@@ -78,12 +78,6 @@ pub struct HeatOperators<'a> {
     /// Whether K is symmetric (no body's material flows).
     pub symmetric: bool,
 }
-
-/// A new direction is kept when its squared C-norm after projection on the basis exceeds
-/// DROP times its own (a residual of 1e-5 of its size): the blocks of nearby shifts are
-/// nearly parallel, and what is left of them beyond that changes no output by more than the
-/// reduction's own error (docs/convergence.md).
-const DROP: f64 = 1e-6;
 
 /// The modes of the reduced heat problem.
 #[derive(Clone, Debug)]
@@ -112,147 +106,6 @@ pub enum ReductionError {
     Eigen,
 }
 
-/// A basis kept C-orthonormal as blocks are added, with C times it, so that a new block's
-/// projection VᵀCW = (CV)ᵀW costs dense products only: applying C to a block (element by
-/// element, 81 × 81 dense products at p = 8) cost as much as the products themselves, and
-/// was made four times a block; it is now made twice (for the columns' norms and for the
-/// projected block's Gram matrix, which then also gives C times the kept directions).
-struct Basis {
-    /// The basis, column by column (N values each): reserved for every direction that may
-    /// be added but filled only as directions are kept, so that memory is touched for the
-    /// kept ones only (growing a matrix block by block zeroed 200 MB of fresh pages on
-    /// punch-b40-heat; reserving it whole and zeroing it, most of a gigabyte at 32 contact
-    /// elements).
-    columns: Vec<f64>,
-    /// C times the basis, the same way (N r values, as much as the basis).
-    capacity_columns: Vec<f64>,
-    rows: usize,
-}
-
-impl Basis {
-    fn with_capacity(rows: usize, most: usize) -> Basis {
-        Basis {
-            columns: Vec::with_capacity(rows * most),
-            capacity_columns: Vec::with_capacity(rows * most),
-            rows,
-        }
-    }
-
-    fn len(&self) -> usize {
-        self.columns.len() / self.rows.max(1)
-    }
-
-    fn view(&self) -> MatRef<'_, f64> {
-        MatRef::from_column_major_slice(&self.columns, self.rows, self.len())
-    }
-
-    fn capacity_view(&self) -> MatRef<'_, f64> {
-        MatRef::from_column_major_slice(&self.capacity_columns, self.rows, self.len())
-    }
-
-    /// Add the directions of `w` (N × b) that the basis lacks: block classical Gram–Schmidt
-    /// in the C inner product, twice (one pass leaves the new directions orthogonal only to
-    /// the square root of round-off when they are nearly dependent), then the block's own
-    /// Gram matrix is diagonalised and its directions whose norm left after projection is
-    /// below √DROP of what they had are dropped.
-    fn add(&mut self, capacity: &BlockOperator, w: Mat<f64>) -> Result<(), ReductionError> {
-        let mut w = w;
-        let cw = capacity.apply(w.as_ref());
-        // Unit C-norm columns, so that the drop is relative to each direction's own size.
-        for c in 0..w.ncols() {
-            let norm: f64 = (0..w.nrows())
-                .map(|i| w[(i, c)] * cw[(i, c)])
-                .sum::<f64>()
-                .sqrt();
-            let inverse = if norm > 0.0 && norm.is_finite() {
-                1.0 / norm
-            } else {
-                0.0
-            };
-            for i in 0..w.nrows() {
-                w[(i, c)] *= inverse;
-            }
-        }
-        if self.len() > 0 {
-            for _ in 0..2 {
-                let h = self.capacity_view().transpose() * &w;
-                w -= self.view() * &h;
-            }
-        }
-        let cw = capacity.apply(w.as_ref());
-        let gram = w.transpose() * &cw;
-        let eigen = gram
-            .self_adjoint_eigen(Side::Lower)
-            .map_err(|_| ReductionError::Eigen)?;
-        let s = eigen.S().column_vector();
-        let kept: Vec<usize> = (0..s.nrows()).filter(|&i| s[i] > DROP).collect();
-        if kept.is_empty() {
-            return Ok(());
-        }
-        let u = eigen.U();
-        let scale = Mat::from_fn(u.nrows(), kept.len(), |r, j| {
-            u[(r, kept[j])] / s[kept[j]].sqrt()
-        });
-        let added = &w * &scale;
-        let capacity_added = &cw * &scale;
-        for c in 0..added.ncols() {
-            self.columns.extend(added.col(c).iter());
-            self.capacity_columns.extend(capacity_added.col(c).iter());
-        }
-        Ok(())
-    }
-}
-
-/// The rational Krylov basis, C-orthonormal: `extra`, then (K + σC)⁻¹ B for each shift and
-/// K⁻¹CK⁻¹B at σ = 0. K + σC has one pattern for every σ (the union of K's and C's), so the
-/// symbolic factorisation is made once.
-fn krylov_basis(
-    operators: HeatOperators<'_>,
-    inputs: MatRef<'_, f64>,
-    shifts: &[f64],
-    extra: &[Vec<f64>],
-) -> Result<Basis, ReductionError> {
-    let (k, c) = (&operators.matrices.first, &operators.matrices.second);
-    let n = k.nrows();
-    let symbolic = SparseSymbolic::new(k, operators.symmetric)
-        .ok_or(ReductionError::NotDefinite { shift: 0.0 })?;
-    let most = extra.len()
-        + inputs.ncols() * (shifts.len() + shifts.iter().filter(|&&s| s == 0.0).count());
-    let mut basis = Basis::with_capacity(n, most);
-    basis.add(
-        operators.capacity,
-        Mat::from_fn(n, extra.len(), |i, j| extra[j][i]),
-    )?;
-    // One array of values for every shift's K + σC, on K's pattern (shared by C), and one
-    // factor refilled for every shift: allocated once, their memory is zeroed by the kernel
-    // once, not per shift.
-    let mut values = vec![0.0; k.val().len()];
-    let mut previous: Option<SparseFactor> = None;
-    for &shift in shifts {
-        for ((m, k), c) in values.iter_mut().zip(k.val()).zip(c.val()) {
-            *m = k + shift * c;
-        }
-        let matrix = SparseColMatRef::new(k.symbolic(), &values);
-        let factor = SparseFactor::refactorise(previous.take(), &symbolic, matrix)
-            .ok_or(ReductionError::NotDefinite { shift })?;
-        let mut w = inputs.to_owned();
-        factor.solve_in_place(&mut w);
-        if !w.col_iter().all(|c| c.iter().all(|x| x.is_finite())) {
-            return Err(ReductionError::NotDefinite { shift });
-        }
-        if shift == 0.0 {
-            let mut second = operators.capacity.apply(w.as_ref());
-            factor.solve_in_place(&mut second);
-            basis.add(operators.capacity, w)?;
-            basis.add(operators.capacity, second)?;
-        } else {
-            basis.add(operators.capacity, w)?;
-        }
-        previous = Some(factor);
-    }
-    Ok(basis)
-}
-
 impl ReducedModel {
     /// The reduced model of C Ṫ + K T = f over the space of `inputs` (N × m, one input per
     /// column) at `shifts` σ ≥ 0 (1/s), with the vectors `extra` added as they are (a
@@ -265,16 +118,19 @@ impl ReducedModel {
     ) -> Result<ReducedModel, ReductionError> {
         // V is C-orthonormal; the eigenvectors Q of VᵀKV make Φ = V Q K-orthogonal too.
         // V is read in place (an owned copy would be N r more values of fresh memory).
-        let basis = krylov_basis(operators, inputs, shifts, extra)?;
+        let basis = Basis::krylov(operators, inputs, shifts, extra)?;
         let v = basis.view();
-        let reduced = v.transpose() * operators.conductivity.apply(v);
+        let kv = operators.conductivity.apply_parallel(v);
         if !operators.symmetric {
             return Ok(ReducedModel {
                 modes: v.to_owned(),
                 rates: Vec::new(),
-                coupling: Some(reduced),
+                coupling: Some(transpose_product(v, kv.as_ref())),
             });
         }
+        // Its lower triangle is all the eigensolver reads.
+        let reduced = symmetric_product(v, kv.as_ref());
+        drop(kv);
         let eigen = reduced
             .self_adjoint_eigen(Side::Lower)
             .map_err(|_| ReductionError::Eigen)?;
@@ -285,7 +141,7 @@ impl ReducedModel {
             .map(|i| if s[i] < 1e-13 * largest { 0.0 } else { s[i] })
             .collect();
         Ok(ReducedModel {
-            modes: v * eigen.U(),
+            modes: rows_product(v, eigen.U()),
             rates,
             coupling: None,
         })
@@ -301,9 +157,18 @@ impl ReducedModel {
         self.len() == 0
     }
 
-    /// Φᵀ f for each column f of `loads` (N × m): the modal loads (r × m).
+    /// Φᵀ f for each column f of `loads` (N × m): the modal loads (r × m). Loads on a few
+    /// unknowns (the contact's heat: its traces) are projected over those rows only.
     pub fn project(&self, loads: MatRef<'_, f64>) -> Mat<f64> {
-        self.modes.transpose() * loads
+        let rows: Vec<usize> = (0..loads.nrows())
+            .filter(|&i| loads.row(i).iter().any(|&x| x != 0.0))
+            .collect();
+        if 2 * rows.len() > loads.nrows() {
+            return self.modes.transpose() * loads;
+        }
+        let modes = Mat::from_fn(rows.len(), self.len(), |i, j| self.modes[(rows[i], j)]);
+        let loads = Mat::from_fn(rows.len(), loads.ncols(), |i, j| loads[(rows[i], j)]);
+        modes.transpose() * loads
     }
 
     /// The modal coordinates of a field given over the free unknowns: Φᵀ C x.

@@ -14,7 +14,7 @@ use faer::sparse::linalg::cholesky::{
 };
 use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMat, SparseColMatRef, Triplet};
-use faer::{Conj, Mat, Par, Side};
+use faer::{Conj, Mat, MatMut, Par, Side};
 use std::sync::Arc;
 
 use super::add_product;
@@ -97,13 +97,18 @@ impl SpdFactor {
 
     /// Solve in place for every column of `rhs`.
     pub fn solve_in_place(&self, rhs: &mut Mat<f64>) {
+        self.solve_columns(rhs.as_mut());
+    }
+
+    /// Solve in place for every column of `rhs`, a view.
+    pub fn solve_columns(&self, rhs: MatMut<'_, f64>) {
         let mut buffer = MemBuffer::new(
             self.symbolic
                 .solve_in_place_scratch::<f64>(rhs.ncols(), Par::Seq),
         );
         LltRef::new(&self.symbolic, &self.values).solve_in_place_with_conj(
             Conj::No,
-            rhs.as_mut(),
+            rhs,
             Par::Seq,
             MemStack::new(&mut buffer),
         );
@@ -200,10 +205,15 @@ impl SparseFactor {
 
     /// Solve in place for every column of `rhs`.
     pub fn solve_in_place(&self, rhs: &mut Mat<f64>) {
+        self.solve_columns(rhs.as_mut());
+    }
+
+    /// Solve in place for every column of `rhs`, a view.
+    pub fn solve_columns(&self, rhs: MatMut<'_, f64>) {
         use faer::linalg::solvers::Solve;
         match self {
-            SparseFactor::Spd(f) => f.solve_in_place(rhs),
-            SparseFactor::General(lu) => lu.solve_in_place(rhs.as_mut()),
+            SparseFactor::Spd(f) => f.solve_columns(rhs),
+            SparseFactor::General(lu) => lu.solve_in_place(rhs),
         }
     }
 

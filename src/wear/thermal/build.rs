@@ -173,10 +173,11 @@ impl CoupledSystem {
         let contact = input.contact;
         let n = contact.len();
         let specs = [conduction_spec(input, 0)?, conduction_spec(input, 1)?];
-        let thermal = [
-            ConductionBody::new(&input.elastic[0].mesh, &specs[0])?,
-            ConductionBody::new(&input.elastic[1].mesh, &specs[1])?,
-        ];
+        let (first, second) = rayon::join(
+            || ConductionBody::new(&input.elastic[0].mesh, &specs[0]),
+            || ConductionBody::new(&input.elastic[1].mesh, &specs[1]),
+        );
+        let thermal = [first?, second?];
         let held = [0, 1].map(|b| thermal[b].expand(&vec![0.0; thermal[b].n_free()]));
         let (n1, n2) = (thermal[0].n_free(), thermal[1].n_free());
         let size = n1 + n2;
@@ -233,7 +234,6 @@ impl CoupledSystem {
                 });
             }
         }
-        let matrices = assemble_pair(&conductivity, &capacity);
         // A unit flux density at point i: w_i t on the receiving body's trace (body 1's under
         // perfect contact: the tie shares it).
         let share = match settings.partition {
@@ -282,26 +282,13 @@ impl CoupledSystem {
                 (f > 0.0 && !thermal[0].has_exit) || (f < 1.0 && !thermal[1].has_exit)
             }
         };
-        let expansion: Vec<f64> = settings.materials.iter().map(|m| m.expansion).collect();
-        let mut loads = Vec::with_capacity(2);
-        for body in input.elastic {
-            loads.push(Arc::new(body.thermal_loads(&expansion).map_err(|e| {
-                ThermalError::Elastic {
-                    body: body.name.clone(),
-                    message: e.to_string(),
-                }
-            })?));
-        }
-        let loads: [Arc<ThermalLoads>; 2] = [Arc::clone(&loads[0]), Arc::clone(&loads[1])];
-        let gap = thermal_gap(
-            input.elastic,
-            &thermal,
-            contact,
-            offsets,
-            [&loads[0], &loads[1]],
-            settings.reference,
-        )
-        .map_err(|(body, message)| ThermalError::Elastic { body, message })?;
+        // The sparse assembly and the thermal gap's elastic set-up are independent: on two
+        // threads.
+        let (matrices, loads_and_gap) = rayon::join(
+            || assemble_pair(&conductivity, &capacity),
+            || thermal_loads_and_gap(input, &thermal, offsets),
+        );
+        let (loads, gap) = loads_and_gap?;
         let contact_temperature = [0, 1].map(|b| of_traces(&traces[b]));
         let mut probe_traces = Vec::new();
         for &x in &input.probes {
@@ -550,11 +537,17 @@ impl ThermalModel {
         };
         // The outputs in the modes first: the modes then move into the fields (a copy was
         // N r values of fresh memory, 11 MB on punch-b40-heat).
-        let gap = system.gap.reduce(&model);
-        let contact_temperature = [0, 1].map(|b| system.contact_temperature[b].reduce(&model));
-        let probes = system.probes.reduce(&model);
-        let boundary = [0, 1].map(|b| system.boundary[b].reduce(&model));
-        let stored = [0, 1].map(|b| system.stored[b].reduce(&model));
+        let (gap, (contact_temperature, probes, boundary, stored)) = rayon::join(
+            || system.gap.reduce(&model),
+            || {
+                (
+                    [0, 1].map(|b| system.contact_temperature[b].reduce(&model)),
+                    system.probes.reduce(&model),
+                    [0, 1].map(|b| system.boundary[b].reduce(&model)),
+                    [0, 1].map(|b| system.stored[b].reduce(&model)),
+                )
+            },
+        );
         let fields = ThermalFields {
             modes: model.modes,
             bodies: system.bodies.clone(),
@@ -579,6 +572,36 @@ impl ThermalModel {
             info,
         })
     }
+}
+
+/// Both bodies' thermal load operators (each on a thread of its own) and the thermal gap.
+fn thermal_loads_and_gap(
+    input: &ThermalBodies<'_>,
+    thermal: &[ConductionBody; 2],
+    offsets: [usize; 2],
+) -> Result<([Arc<ThermalLoads>; 2], GapOutput), ThermalError> {
+    let settings = input.settings;
+    let expansion: Vec<f64> = settings.materials.iter().map(|m| m.expansion).collect();
+    let of_body = |body: &ElasticBody| {
+        body.thermal_loads(&expansion)
+            .map(Arc::new)
+            .map_err(|e| ThermalError::Elastic {
+                body: body.name.clone(),
+                message: e.to_string(),
+            })
+    };
+    let (first, second) = rayon::join(|| of_body(input.elastic[0]), || of_body(input.elastic[1]));
+    let loads: [Arc<ThermalLoads>; 2] = [first?, second?];
+    let gap = thermal_gap(
+        input.elastic,
+        thermal,
+        input.contact,
+        offsets,
+        [&loads[0], &loads[1]],
+        settings.reference,
+    )
+    .map_err(|(body, message)| ThermalError::Elastic { body, message })?;
+    Ok((loads, gap))
 }
 
 /// The sparse output of traces.

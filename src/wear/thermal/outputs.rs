@@ -6,12 +6,14 @@
 //! would take 400 MB at 64; the element-wise form keeps only X.
 
 use super::Affine;
+use crate::conduction::blocks::for_column_ranges;
 use crate::conduction::reduced::ReducedModel;
 use crate::conduction::ConductionBody;
 use crate::contact::CondensedContact;
 use crate::elasticity::{ElasticBody, ThermalLoads};
 use crate::quadrature::gauss_lobatto;
-use faer::{Mat, MatRef};
+use faer::linalg::matmul::matmul;
+use faer::{Accum, Mat, MatMut, MatRef, Par};
 
 /// y = M T + c with M given by sparse rows over the combined free unknowns.
 #[derive(Clone, Debug, Default)]
@@ -76,11 +78,21 @@ pub struct GapOutput {
 }
 
 impl GapOutput {
-    /// The gap of the columns of `t` (combined free unknowns × r): points × r.
+    /// The gap of the columns of `t` (combined free unknowns × r): points × r, the columns
+    /// in ranges on all threads.
     fn apply(&self, t: MatRef<'_, f64>) -> Mat<f64> {
+        let mut out = Mat::<f64>::zeros(self.offset.len(), t.ncols());
+        for_column_ranges(out.as_mut(), |range, part| {
+            self.add_applied(t.subcols(range.start, range.len()), part)
+        });
+        out
+    }
+
+    /// out += the gap of the columns of `t`.
+    fn add_applied(&self, t: MatRef<'_, f64>, mut out: MatMut<'_, f64>) {
         let (n, r) = (self.offset.len(), t.ncols());
-        let mut out = Mat::<f64>::zeros(n, r);
         let mut gathered = Mat::<f64>::zeros(0, r);
+        let mut load = Mat::<f64>::zeros(0, r);
         let mut adjoint = Mat::<f64>::zeros(n, 0);
         for body in &self.bodies {
             for (dofs, unknowns, ty) in &body.elements {
@@ -91,7 +103,16 @@ impl GapOutput {
                         gathered[(a, c)] = if s == 0.0 { 0.0 } else { s * column[g] };
                     }
                 }
-                let load = &body.loads[*ty] * &gathered;
+                let matrix = &body.loads[*ty];
+                load.resize_with(matrix.nrows(), r, |_, _| 0.0);
+                matmul(
+                    load.as_mut(),
+                    Accum::Replace,
+                    matrix,
+                    &gathered,
+                    1.0,
+                    Par::Seq,
+                );
                 adjoint.resize_with(n, dofs.len(), |_, _| 0.0);
                 for (k, &(d, s)) in dofs.iter().enumerate() {
                     let source = body.adjoint.col(d);
@@ -100,10 +121,9 @@ impl GapOutput {
                         target[i] = s * source[i];
                     }
                 }
-                out += &adjoint * &load;
+                matmul(out.as_mut(), Accum::Add, &adjoint, &load, 1.0, Par::Seq);
             }
         }
-        out
     }
 
     /// The thermal gap of field `t` (combined free unknowns), mm.
