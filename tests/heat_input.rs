@@ -168,3 +168,38 @@ fn heat_that_cannot_leave_has_no_steady_state() {
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     assert_eq!(summary["heat"]["heat_can_leave"], false);
 }
+
+/// Temperatures the model cannot be trusted with are said, by `steady` as by `run`: above
+/// 300 °C (the properties held constant) and below what the problem imposes (20 °C here:
+/// frictional heat cannot cool anything, so an undershoot is the elements' oscillation in a
+/// thermal layer they do not resolve).
+#[test]
+fn hot_and_unresolved_temperatures_are_warned_by_both_jobs() {
+    // Sliding ten times faster: the contact passes 300 °C (steady: 324 °C), resolved.
+    let fast = baseline().replace("omega = 10.0", "omega = 100.0");
+    assert_ne!(fast, baseline());
+    for job in ["run", "steady"] {
+        let (code, _, err, _) = run_cli(job, &[], &fast, &format!("hot_{job}"));
+        assert_eq!(code, 0, "{err}");
+        assert!(err.contains("warning[heat-hot]"), "{job}: {err}");
+        assert!(!err.contains("heat-undershoot"), "{job}: {err}");
+    }
+    // Conductivities a hundred times lower: a thermal layer of a few µm under elements of
+    // 5 mm, and temperatures far below 20 °C beside the peak.
+    let poor = baseline()
+        .replace("conductivity = 2.0 ", "conductivity = 0.01 ")
+        .replace("conductivity = 50.0 ", "conductivity = 0.05 ");
+    assert_ne!(poor, baseline());
+    for job in ["run", "steady"] {
+        let (code, _, err, _) = run_cli(job, &[], &poor, &format!("cold_{job}"));
+        assert_eq!(code, 0, "{err}");
+        assert!(err.contains("warning[heat-undershoot]"), "{job}: {err}");
+    }
+    // The shipped example says neither.
+    let (code, _, err, _) = run_cli("steady", &[], &baseline(), "shipped_steady");
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        !err.contains("heat-hot") && !err.contains("heat-undershoot"),
+        "{err}"
+    );
+}

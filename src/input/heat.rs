@@ -156,6 +156,27 @@ pub struct ThermalProperties {
     pub expansion: Option<f64>,
 }
 
+impl HeatSettings {
+    /// The lowest temperature the problem imposes (°C): the initial temperature, the
+    /// ambient one (of the surroundings and of material entering a moving body), and every
+    /// held or convection temperature of an edge or the faces.
+    pub fn lowest_imposed(&self) -> f64 {
+        let of = |c: &EdgeCondition| match *c {
+            EdgeCondition::Temperature(t) => t,
+            EdgeCondition::Convection { ambient, .. } => ambient,
+        };
+        let edges = self.bodies.iter().flat_map(|b| {
+            b.edges
+                .iter()
+                .map(|(_, c)| of(c))
+                .chain(b.uncovered.as_ref().map(of))
+        });
+        edges
+            .chain(self.faces.map(|f| f.ambient))
+            .fold(self.initial.min(self.ambient), f64::min)
+    }
+}
+
 impl Problem {
     /// The validated `[heat]` section, or None without one. Edge names are resolved on the
     /// meshes the bodies are solved on.

@@ -266,6 +266,10 @@ pub struct ThermalInfo {
     pub peclet: [f64; 2],
     /// Reference (stress-free) temperature, °C.
     pub reference: f64,
+    /// The lowest temperature the problem imposes anywhere (°C): its initial temperature,
+    /// and every held, ambient and entering temperature. Frictional heat only adds heat, so
+    /// a temperature below it is the discretisation's undershoot, not physics.
+    pub floor: f64,
     /// Seconds spent building the model.
     pub seconds: f64,
 }
@@ -279,6 +283,8 @@ pub(super) struct HeatRun<'a> {
     pub gap: Vec<f64>,
     /// The thermal gap at the start of the current cycle.
     cycle_start: Vec<f64>,
+    /// The lowest temperature on either body's boundary samples at the end of any step, °C.
+    pub lowest: f64,
     /// The thermal gap's change over the last complete cycle (mm).
     pub cycle_change: Vec<f64>,
 }
@@ -294,6 +300,7 @@ impl<'a> HeatRun<'a> {
             cycle_start: gap.clone(),
             cycle_change: vec![0.0; gap.len()],
             gap,
+            lowest: f64::INFINITY,
         }
     }
 
@@ -309,9 +316,11 @@ impl<'a> HeatRun<'a> {
         self.model
             .advance(&mut self.state, pressure, direction, k, first_half);
         self.model.thermal_gap(&self.state, &mut self.gap);
+        let extremes = self.model.boundary_extremes(&self.state.a);
+        self.lowest = self.lowest.min(extremes[0][0]).min(extremes[1][0]);
         (
             self.model.probes.at(&self.state.a),
-            self.model.max_temperatures(&self.state),
+            extremes.map(|[_, high]| high),
         )
     }
 
@@ -353,6 +362,9 @@ pub struct ThermalHistory {
     pub stored: f64,
     /// Time heated, s.
     pub time: f64,
+    /// The lowest temperature on the boundary samples at the end of any step, °C.
+    #[serde(skip)]
+    pub lowest: f64,
 }
 
 impl HeatRun<'_> {
@@ -371,6 +383,7 @@ impl HeatRun<'_> {
             generated: self.state.generated,
             stored: self.model.stored_heat(&self.state),
             time: self.state.time,
+            lowest: self.lowest,
         }
     }
 }

@@ -507,6 +507,7 @@ impl ThermalModel {
             held_points: system.held_points,
             peclet: system.peclet,
             reference: input.settings.reference,
+            floor: input.settings.lowest_imposed(),
             seconds: start.elapsed().as_secs_f64(),
         };
         let h = input.sliding.half_period();

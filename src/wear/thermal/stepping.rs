@@ -308,11 +308,19 @@ impl ThermalModel {
 
     /// The largest temperature on each body's boundary, °C.
     pub fn max_temperatures(&self, state: &ThermalState) -> [f64; 2] {
+        self.boundary_extremes(&state.a).map(|[_, high]| high)
+    }
+
+    /// The lowest and the largest temperature (°C) on each body's boundary samples at
+    /// modal coordinates `a`: `[body][low, high]`.
+    pub fn boundary_extremes(&self, a: &[f64]) -> [[f64; 2]; 2] {
         [0, 1].map(|b| {
             self.boundary[b]
-                .at(&state.a)
+                .at(a)
                 .into_iter()
-                .fold(f64::NEG_INFINITY, f64::max)
+                .fold([f64::INFINITY, f64::NEG_INFINITY], |[low, high], t| {
+                    [low.min(t), high.max(t)]
+                })
         })
     }
 
