@@ -203,3 +203,36 @@ fn hot_and_unresolved_temperatures_are_warned_by_both_jobs() {
         "{err}"
     );
 }
+
+/// A probe given a hair outside body 1's contact edge (a coordinate rounded below the edge,
+/// as a point on a brake shoe's arc rounded to four decimals is) has its temperature taken at
+/// the contact point its pressure is read at, not refused: the same temperature, to the
+/// field's smoothness over 0.1 µm, as a probe on the edge.
+#[test]
+fn a_probe_a_hair_off_the_contact_edge_reads_the_edge() {
+    let on = baseline().replace(
+        "M = { body = \"punch\", at = [1070.0, 100.0] }",
+        "M = { body = \"punch\", at = [1100.0, 100.0] }",
+    );
+    let off = on.replace("at = [1100.0, 100.0]", "at = [1100.0, 99.9999]");
+    assert_ne!(on, off);
+    let temperature = |text: &str, tag: &str| {
+        let (code, _, err, out) = run_cli("run", &["--steps", "20"], text, tag);
+        assert_eq!(code, 0, "{err}");
+        let history = std::fs::read_to_string(out.join("history.csv")).unwrap();
+        let header: Vec<&str> = history.lines().next().unwrap().split(',').collect();
+        let column = header.iter().position(|h| *h == "T_M_C").unwrap();
+        let last = history
+            .lines()
+            .last()
+            .unwrap()
+            .split(',')
+            .nth(column)
+            .unwrap();
+        last.parse::<f64>().unwrap()
+    };
+    let (t_on, t_off) = (temperature(&on, "probe_on"), temperature(&off, "probe_off"));
+    assert!(t_on > 20.5, "the contact has warmed: {t_on}");
+    // The same contact point, the same trace: equal to round-off.
+    assert!((t_on - t_off).abs() < 1e-9 * t_on, "{t_on} against {t_off}");
+}

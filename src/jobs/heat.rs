@@ -42,13 +42,7 @@ pub fn thermal_model(
         .as_ref()
         .map(|c| c.body.clone())
         .unwrap_or_default();
-    let probes = problem
-        .spec
-        .probes
-        .values()
-        .filter(|p| p.body == body1)
-        .map(|p| p.at)
-        .collect();
+    let probes = probe_points(problem, contact, bodies[0], &body1)?;
     let model = ThermalModel::build(ThermalBodies {
         elastic: bodies,
         contact,
@@ -63,6 +57,41 @@ pub fn thermal_model(
         ))
     })?;
     Ok(Some(model))
+}
+
+/// Where the temperature of each probe on body 1 is taken: the probe's point when it lies in
+/// body 1, else (a point given on the contact edge, a hair outside it: the arc of a brake
+/// shoe rounded to four decimals) the contact point the probe's pressure is read at, which
+/// lies on body 1's edge. In the order of [`super::driver::contact_probes`].
+fn probe_points(
+    problem: &Problem,
+    contact: &CondensedContact,
+    body: &ElasticBody,
+    name: &str,
+) -> Result<Vec<crate::geometry::Point>, JobError> {
+    let nearest = super::driver::contact_probes(problem, contact);
+    let mut points = Vec::new();
+    for (key, probe) in problem.spec.probes.iter().filter(|(_, p)| p.body == name) {
+        let on_edge = nearest
+            .iter()
+            .find(|(n, _)| n == key)
+            .map(|&(_, i)| contact.points.x[i]);
+        let point = [Some(probe.at), on_edge]
+            .into_iter()
+            .flatten()
+            .find(|&x| body.mesh.locate(x).is_some())
+            .ok_or_else(|| {
+                problem.error(
+                    format!("probes.{key}.at"),
+                    format!(
+                        "({}, {}) is not in body \"{name}\", and neither is the contact point nearest to it: its temperature cannot be taken",
+                        probe.at[0], probe.at[1]
+                    ),
+                )
+            })?;
+        points.push(point);
+    }
+    Ok(points)
 }
 
 /// The `heat` block of a run's summary.json: the model's figures and the heat balance.
