@@ -313,7 +313,7 @@ impl Problem {
                 match v {
                     None if needed => Err(self.error(key, format!("is missing: material \"{name}\" is used by a contact body of a problem with heat, which needs its conductivity (W/(m·K)), specific_heat (J/(kg·K)), density (kg/m³) and expansion (1/K)"))),
                     None => Ok(0.0),
-                    Some(v) if !v.is_finite() || (positive && v <= 0.0) || v.abs() > 1e9 => Err(self.error(key, format!("must be {} and finite, got {v}", if positive { "positive" } else { "a number" }))),
+                    Some(v) if !v.is_finite() || (positive && v <= 0.0) || v.abs() > 1e9 => Err(self.error(key, format!("must be {}, finite and at most 1e9 in size, got {v:e}", if positive { "positive" } else { "a number" }))),
                     Some(v) => Ok(v),
                 }
             };
