@@ -204,7 +204,7 @@ impl Problem {
         match (plate.motion.as_str(), control) {
             ("vertical", _) | ("fixed", FrettingControl::Displacement) => Ok(()),
             ("vertical_rotation", _) if coupled => Ok(()),
-            ("vertical_rotation", _) => Err(self.error("plate.motion", "is \"vertical_rotation\" with fretting.coupled = false: a plate that rotates turns under the tangential force, which only the coupled problem carries (leave fretting.coupled out, or true)")),
+            ("vertical_rotation", _) => Err(self.error("plate.motion", "is \"vertical_rotation\" and the fretting problem is uncoupled (fretting.coupled = false, as given or as the default for bodies of one material): a plate that rotates turns under the tangential force, which only the coupled problem carries; set fretting.coupled = true")),
             ("fixed", FrettingControl::Force) => Err(self.error("plate.motion", "is \"fixed\" and the fretting loading is a force: a held plate takes the force itself and nothing reaches the contact. Give plate.motion = \"vertical\" (the plate then shifts under the force), or fretting.loading = \"displacement\" (the held plate's shift)")),
             (other, _) => Err(self.error("plate.motion", format!("must be \"vertical\", \"vertical_rotation\" or \"fixed\", got \"{other}\""))),
         }

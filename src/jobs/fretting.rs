@@ -250,6 +250,10 @@ pub fn run(
         crate::wear::fretting::run(&mut solver, &setup.contact, model.as_mut(), &input, on_step)
             .map_err(|stop| match stop {
                 FrettingStop::Cycle(e) => cycle_error(problem, &setup.settings, e),
+                // Bad input, as `contact` and `steady` say it (exit 2, the key).
+                FrettingStop::NoContact => problem
+                    .error("fretting", FrettingStop::NoContact.to_string())
+                    .into(),
                 other => {
                     JobError::Compute(format!("the first cycle: {other}; nothing was written"))
                 }
