@@ -156,7 +156,7 @@ fn heat_that_cannot_leave_has_no_steady_state() {
     let (code, _, err, out) = run_cli("steady", &[], &text, "sealed_steady");
     assert_eq!(code, 2, "{err}");
     assert!(
-        err.contains("heat") && err.contains("cannot leave"),
+        err.contains("heat") && err.contains("cannot lose it"),
         "{err}"
     );
     assert!(!out.join("summary.json").exists(), "nothing is written");
@@ -235,4 +235,50 @@ fn a_probe_a_hair_off_the_contact_edge_reads_the_edge() {
     assert!(t_on > 20.5, "the contact has warmed: {t_on}");
     // The same contact point, the same trace: equal to round-off.
     assert!((t_on - t_off).abs() < 1e-9 * t_on, "{t_on} against {t_off}");
+}
+
+/// A body that cannot lose heat but is given none of it (a share of 0 for the punch, whose
+/// edges and faces are then all insulated; the strip's base is held) has a steady state: the
+/// punch keeps its start, 20 °C, and the strip's periodic temperature is the run's. `steady`
+/// failed on it ("Singular", blaming friction): its constant mode, of rate 0, was divided by
+/// the zero of its period's decay.
+#[test]
+fn a_sealed_body_given_no_heat_has_a_steady_state() {
+    let text = baseline()
+        .replace(
+            "partition = \"perfect\"          # equal temperatures at partner points; the share follows\n",
+            "partition = 0.0\n",
+        )
+        .replace("other_edges = { convection = 25.0, ambient = 20.0 }   # W/(m²·K), °C: every outer edge not named\n", "")
+        .replace("faces = { convection = 25.0, ambient = 20.0 }         # both faces of the 10 mm plate\n", "");
+    assert!(text.contains("partition = 0.0") && !text.contains("other_edges"));
+    let read = |out: &std::path::Path| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap()
+    };
+    let (code, _, err, out) = run_cli("steady", &[], &text, "sealed_share0_steady");
+    assert_eq!(code, 0, "{err}");
+    let steady = read(&out);
+    let (code, _, err, out) = run_cli("run", &[], &text, "sealed_share0_run");
+    assert_eq!(code, 0, "{err}");
+    let run = read(&out);
+    let values = |v: &serde_json::Value| -> Vec<f64> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect()
+    };
+    // The punch receives nothing: it stays at its start to round-off of the reduction.
+    for t in values(&steady["heat"]["contact_temperature_plus"]["body1"]) {
+        assert!((t - 20.0).abs() < 1e-6, "{t}");
+    }
+    // The strip's periodic temperature: the run's last step (a '−' end, the '+' start) within
+    // 0.05 K of its 30–40 K rise, as the run reaches the steady state (its pressures 0.01 %).
+    let strip_steady = values(&steady["heat"]["contact_temperature_plus"]["body2"]);
+    let strip_run = values(&run["final"]["contact_temperature"]["body2"]);
+    let peak = strip_steady.iter().cloned().fold(0.0, f64::max);
+    assert!(peak > 40.0, "the strip warms: {peak}");
+    for (a, b) in strip_steady.iter().zip(&strip_run) {
+        assert!((a - b).abs() < 0.05, "{a} against {b}");
+    }
 }

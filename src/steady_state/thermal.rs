@@ -64,7 +64,7 @@ pub enum ThermalSteadyError {
     #[error(transparent)]
     Steady(#[from] SteadyError),
     /// The heat cannot leave the bodies: their temperature rises for ever.
-    #[error("the heat cannot leave the bodies (every edge is insulated and the faces do not convect), so their temperature rises without end and there is no steady state; hold an edge at a temperature or let edges or faces convect ([heat.edges], heat.other_edges, heat.faces)")]
+    #[error("frictional heat enters a body that cannot lose it (its edges insulated, its faces not convecting, or under a given share no exit of its own), so its temperature rises without end and there is no steady state; hold an edge of that body at a temperature or let its edges or faces convect ([heat.edges], heat.other_edges, heat.faces), or give it no share of the heat (heat.partition)")]
     NoExit,
 }
 

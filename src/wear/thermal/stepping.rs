@@ -360,8 +360,20 @@ impl ThermalModel {
                     let source = constant * self.source_modal[j];
                     let g_plus = sine * speed * plus[j] + source;
                     let g_minus = sine * speed * minus[j] + source;
-                    start_plus[j] = (e * g_plus + g_minus)
-                        / (-(-2.0 * rates[j] * self.sliding.half_period()).exp_m1());
+                    if rates[j] > 0.0 {
+                        start_plus[j] = (e * g_plus + g_minus)
+                            / (-(-2.0 * rates[j] * self.sliding.half_period()).exp_m1());
+                    } else {
+                        // A body that keeps its heat (rate 0): periodic only if it receives
+                        // none over a period (a share of 0 for it), and then it keeps what it
+                        // had at the start.
+                        let net = g_plus + g_minus;
+                        let scale = g_plus.abs() + g_minus.abs() + self.initial[j].abs();
+                        if net.abs() > 1e-9 * scale {
+                            return None;
+                        }
+                        start_plus[j] = self.initial[j];
+                    }
                     start_minus[j] = e * start_plus[j] + g_plus;
                 }
                 Some([start_plus, start_minus])
