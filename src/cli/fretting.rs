@@ -16,10 +16,16 @@ pub(crate) fn contact(p: &Problem, out: &Path, vtk: bool) -> Result<(), Failure>
     refuse_vtk(p, vtk)?;
     let result = wearfem::jobs::fretting::contact(p)?;
     wearfem::report::fretting::write_contact(out, p, &result)?;
+    print_warnings(p, &result.setup, &result.cycle);
     let x = result.setup.x();
     let stick = match result.cycle.stick_extent(&x) {
         Some((a, b)) => format!("stick zone {a:.4} … {b:.4} mm"),
-        None => "gross slip (no point sticks through the cycle)".into(),
+        None if result.cycle.gross_slip => {
+            "gross slip (every point in contact slips at some instant of the cycle)".into()
+        }
+        // The summary's gross_slip is false: some point sticks at every instant, but the
+        // stick zone moves (a rocking plate), so none sticks through the whole cycle.
+        None => "partial slip with a moving stick zone (no point sticks through the whole cycle, but at every instant some point sticks)".into(),
     };
     println!(
         "{}: {} contact points, peak pressure {:.4} MPa, friction limit μP = {:.4e} N; fretting cycle: peak force {:.4e} N at shift {:.4e} mm, {stick}, {:.4e} N·mm dissipated per cycle → {}",
@@ -43,6 +49,7 @@ pub(crate) fn run(p: &Problem, out: &Path, steps: Option<usize>, vtk: bool) -> R
     }
     let run = wearfem::jobs::fretting::run(p, None, |_| {})?;
     wearfem::report::fretting::write_run(out, p, &run)?;
+    print_warnings(p, &run.setup, &run.history.first_cycle);
     let h = &run.history;
     let last = h.steps.last();
     let ended = match h.wear_stopped {
@@ -71,6 +78,7 @@ pub(crate) fn steady(p: &Problem, out: &Path, vtk: bool) -> Result<(), Failure> 
     refuse_vtk(p, vtk)?;
     let result = wearfem::jobs::fretting::steady(p)?;
     wearfem::report::fretting::write_steady(out, p, &result)?;
+    print_warnings(p, &result.setup, &result.state.first_cycle);
     let s = &result.state;
     let x = result.setup.x();
     let touching: Vec<f64> = (0..x.len())
@@ -94,4 +102,15 @@ pub(crate) fn steady(p: &Problem, out: &Path, vtk: bool) -> Result<(), Failure> 
         out.display()
     );
     Ok(())
+}
+
+/// The fretting cycle's warnings on stderr, one line each, as the other jobs print theirs.
+fn print_warnings(
+    p: &Problem,
+    setup: &wearfem::jobs::fretting::FrettingSetup,
+    cycle: &wearfem::solver::fretting::FrettingCycle,
+) {
+    for line in wearfem::jobs::fretting::cycle_warnings(p, setup, cycle) {
+        eprintln!("{line}");
+    }
 }

@@ -345,6 +345,40 @@ pub fn cycle_json(setup: &FrettingSetup, cycle: &FrettingCycle) -> Value {
     })
 }
 
+/// The share of the contact zone's width past which the cycle's largest shift breaks the
+/// fixed contact pairs that fretting assumes (its slip small against the contact), as the
+/// sliding model's `stroke` warning does for a stroke against the contact edge.
+pub const STROKE_SHARE: f64 = 0.1;
+
+/// The warnings of a fretting cycle: `fretting-stroke` when the plate's largest shift over the
+/// cycle exceeds [`STROKE_SHARE`] of the zone that carries shear at the cycle's peak.
+pub fn cycle_warnings(
+    problem: &Problem,
+    setup: &FrettingSetup,
+    cycle: &FrettingCycle,
+) -> Vec<String> {
+    let x = setup.x();
+    let Some(peak) = cycle.states.first() else {
+        return Vec::new();
+    };
+    let carrying = || (0..x.len()).filter(|&i| peak.force[i] != 0.0).map(|i| x[i]);
+    let width =
+        carrying().fold(f64::NEG_INFINITY, f64::max) - carrying().fold(f64::INFINITY, f64::min);
+    let shift = cycle
+        .states
+        .iter()
+        .fold(0.0f64, |m, s| m.max(s.shift.abs()));
+    if width > 0.0 && shift > STROKE_SHARE * width {
+        vec![crate::checks::codes::warning(
+            "fretting-stroke",
+            &problem.file,
+            format!("fretting: the plate shifts by up to {shift:.4e} mm in the cycle, {:.0} % of the {width:.4} mm contact zone: fretting's contact pairs are fixed (its slip small against the contact), which a shift of that size is not; the results are those of fixed partners", 100.0 * shift / width),
+        )]
+    } else {
+        Vec::new()
+    }
+}
+
 impl FrettingContact {
     /// What `wearfem contact` writes as summary.json (and Python's `fretting_contact`
     /// returns): the cycle's figures and the profiles along the contact (x mm, the normal
@@ -371,7 +405,7 @@ impl FrettingContact {
             "slip_amplitude": numbers(&self.cycle.slip_amplitude),
             "setup_seconds": setup.seconds,
             "seconds": self.seconds,
-            "warnings": [],
+            "warnings": cycle_warnings(problem, setup, &self.cycle),
         })
     }
 }
@@ -407,7 +441,7 @@ impl FrettingRun {
             })),
             "setup_seconds": setup.seconds,
             "seconds": self.seconds,
-            "warnings": [],
+            "warnings": cycle_warnings(problem, setup, &h.first_cycle),
         })
     }
 }
@@ -435,7 +469,7 @@ impl FrettingSteady {
             "in_final_stick_set": s.stick,
             "setup_seconds": setup.seconds,
             "seconds": self.seconds,
-            "warnings": [],
+            "warnings": cycle_warnings(problem, setup, &s.first_cycle),
         })
     }
 }
