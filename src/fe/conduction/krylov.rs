@@ -278,32 +278,17 @@ pub fn transpose_product(a: MatRef<'_, f64>, b: MatRef<'_, f64>) -> Mat<f64> {
     sum
 }
 
-/// w −= v h (w: N × b, v: N × r, h: r × b), each row range on its own.
-fn subtract_product(w: MatMut<'_, f64>, v: MatRef<'_, f64>, h: MatRef<'_, f64>) {
+/// out = α a t (`Accum::Replace`) or out += α a t (`Accum::Add`), with a: N × m, t: m × k,
+/// each row range on its own.
+fn rows_product_into(
+    out: MatMut<'_, f64>,
+    accum: Accum,
+    a: MatRef<'_, f64>,
+    t: MatRef<'_, f64>,
+    alpha: f64,
+) {
     let mut tasks = Vec::new();
-    let mut rest = w;
-    for rows in row_ranges(v.nrows()) {
-        let (head, tail) = rest.split_at_row_mut(rows.len());
-        tasks.push((rows, head));
-        rest = tail;
-    }
-    tasks.into_par_iter().for_each(|(rows, part)| {
-        matmul(
-            part,
-            Accum::Add,
-            v.subrows(rows.start, rows.len()),
-            h,
-            -1.0,
-            Par::Seq,
-        );
-    });
-}
-
-/// a t (a: N × m, t: m × k), each row range on its own.
-pub fn rows_product(a: MatRef<'_, f64>, t: MatRef<'_, f64>) -> Mat<f64> {
-    let mut out = Mat::<f64>::zeros(a.nrows(), t.ncols());
-    let mut tasks = Vec::new();
-    let mut rest = out.as_mut();
+    let mut rest = out;
     for rows in row_ranges(a.nrows()) {
         let (head, tail) = rest.split_at_row_mut(rows.len());
         tasks.push((rows, head));
@@ -312,13 +297,24 @@ pub fn rows_product(a: MatRef<'_, f64>, t: MatRef<'_, f64>) -> Mat<f64> {
     tasks.into_par_iter().for_each(|(rows, part)| {
         matmul(
             part,
-            Accum::Replace,
+            accum,
             a.subrows(rows.start, rows.len()),
             t,
-            1.0,
+            alpha,
             Par::Seq,
         );
     });
+}
+
+/// w −= v h (w: N × b, v: N × r, h: r × b).
+fn subtract_product(w: MatMut<'_, f64>, v: MatRef<'_, f64>, h: MatRef<'_, f64>) {
+    rows_product_into(w, Accum::Add, v, h, -1.0);
+}
+
+/// a t (a: N × m, t: m × k), each row range on its own.
+pub fn rows_product(a: MatRef<'_, f64>, t: MatRef<'_, f64>) -> Mat<f64> {
+    let mut out = Mat::<f64>::zeros(a.nrows(), t.ncols());
+    rows_product_into(out.as_mut(), Accum::Replace, a, t, 1.0);
     out
 }
 
