@@ -1,15 +1,19 @@
 //! The reduced heat model against the full one (docs/convergence.md, "The reduced heat
 //! model"): punch-b40-heat's heat problem under the pressures of its first '+' and '−'
-//! contact solves, stepped half period by half period by the full model (SDIRK2, 32 steps per
-//! half period) and by reduced models at several sets of shifts; the largest differences of
-//! the contact temperature (relative to its largest rise) and of the thermal gap (relative to
-//! its range) over the run, and the set-up time of each reduced model.
+//! contact solves, stepped half period by half period by the full model in the tensor-product
+//! space everywhere (SDIRK2, 32 steps per half period) and by reduced models in the run's
+//! spaces (`heat.space`, default "auto": [`wearfem::conduction::spaces`]; `HEAT_SPACE=tensor`
+//! or `trunk` to change it) at several sets of shifts; the largest differences of the contact
+//! temperature (relative to its largest rise) and of the thermal gap (relative to its range)
+//! over the run, and the set-up time of each reduced model. The differences are the
+//! reduction's error plus that of the spaces.
 //!
 //! `cargo run --release --example heat_reduction [ELEMENTS] [HALF_PERIODS]` (default 8, 60).
 
 use std::time::Instant;
 use wearfem::complementarity::{ContactSolver, Direction, Method};
 use wearfem::contact::CondensedContact;
+use wearfem::heat_input::{HeatSettings, HeatSpace};
 use wearfem::problem::Problem;
 use wearfem::wear::thermal::{CoupledSystem, Sliding, ThermalBodies, ThermalModel, SHIFTS};
 
@@ -23,6 +27,18 @@ fn main() {
     let text = wearfem::examples::refined_punch("punch-b40-heat", elements).unwrap();
     let problem = Problem::from_toml(&text, "punch-b40-heat").unwrap();
     let settings = problem.heat_settings().unwrap().unwrap();
+    let full_space = HeatSettings {
+        space: HeatSpace::Tensor,
+        ..settings.clone()
+    };
+    let reduced_settings = HeatSettings {
+        space: match std::env::var("HEAT_SPACE").as_deref() {
+            Ok("tensor") => HeatSpace::Tensor,
+            Ok("trunk") => HeatSpace::Trunk,
+            _ => settings.space,
+        },
+        ..settings.clone()
+    };
     let (contact, body1, body2) = CondensedContact::build(&problem).unwrap();
     let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
     let pressures: Vec<Vec<f64>> = [Direction::Plus, Direction::Minus]
@@ -30,19 +46,22 @@ fn main() {
         .map(|&d| solver.solve(&contact.points.initial_gap, d).0.pressure)
         .collect();
     let (amplitude, omega) = (1.5, 10.0);
-    let input = || ThermalBodies {
+    let input_with = |settings| ThermalBodies {
         elastic: [&body1, &body2],
         contact: &contact,
-        settings: &settings,
+        settings,
         space: problem.discretisation.space,
         sliding: Sliding::Reciprocating { amplitude, omega },
         probes: vec![],
     };
     let t = Instant::now();
-    let system = CoupledSystem::new(&input()).unwrap();
+    let system = CoupledSystem::new(&input_with(&full_space)).unwrap();
+    let input = || input_with(&reduced_settings);
+    let reduced_system = CoupledSystem::new(&input()).unwrap();
     println!(
-        "{elements} elements: {} unknowns, {} contact points; full system built in {:.3} s",
+        "{elements} elements: {} unknowns ({} in the reduced model's spaces), {} contact points; full system built in {:.3} s",
         system.len(),
+        reduced_system.len(),
         contact.len(),
         t.elapsed().as_secs_f64()
     );
@@ -107,7 +126,8 @@ fn main() {
         let mut shifts = vec![0.0];
         shifts.extend(set.iter().map(|s| s / h));
         let t = Instant::now();
-        let model = ThermalModel::from_system(&system, &shifts, &input(), Instant::now()).unwrap();
+        let model =
+            ThermalModel::from_system(&reduced_system, &shifts, &input(), Instant::now()).unwrap();
         let setup = t.elapsed().as_secs_f64();
         let mut state = model.start();
         let (mut temperature_error, mut gap_error) = (0.0f64, 0.0f64);

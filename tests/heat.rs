@@ -684,3 +684,42 @@ fn the_difference_is_the_swings() {
     );
     assert!(none < 1e-9, "{none}");
 }
+
+#[test]
+fn the_default_spaces_give_the_tensor_product_temperatures() {
+    // `heat.space = "auto"` keeps the tensor-product space in the elements along the contact
+    // and takes the trunk space elsewhere (wearfem::conduction::spaces). The reference is the
+    // tensor-product space everywhere, whose space holds both others: over 60 half periods
+    // the probe's temperature at M and the largest temperature of each body must agree to
+    // 1e-4 of the rise (measured 5e-6 over 1700 steps, docs/convergence.md; the rest of the
+    // bound is margin for round-off in the reduction). The trunk space everywhere misses the
+    // thin heated layer at the punch's corners (3e-3 of the rise at M after the first half
+    // period): it must fail the same bound, or the comparison could not tell them apart.
+    let steps = Some(60);
+    let tensor = common::run(
+        &heat_problem(&[("[heat]", "[heat]\nspace = \"tensor\"")]),
+        steps,
+    );
+    let auto = common::run(&heat_problem(&[]), steps);
+    let trunk = common::run(
+        &heat_problem(&[("[heat]", "[heat]\nspace = \"trunk\"")]),
+        steps,
+    );
+    let series = |run: &driver::WearRun| -> Vec<f64> {
+        run.history
+            .steps
+            .iter()
+            .flat_map(|s| {
+                let high = s.max_temperature.expect("a run with heat");
+                s.temperatures.iter().copied().chain(high)
+            })
+            .collect()
+    };
+    let reference = series(&tensor);
+    let rise = reference.iter().fold(0.0f64, |m, t| m.max(t - 20.0));
+    let auto_error = worst(&series(&auto), &reference, rise);
+    let trunk_error = worst(&series(&trunk), &reference, rise);
+    eprintln!("against the tensor-product space: auto {auto_error:.2e}, trunk {trunk_error:.2e} of the rise {rise:.2} K");
+    assert!(auto_error < 1e-4, "{auto_error}");
+    assert!(trunk_error > 1e-3, "{trunk_error}");
+}

@@ -115,6 +115,11 @@ fn broken_heat_sections_name_their_key() {
             "reference_temperatur",
         ),
         (
+            "reference_temperature = 20.0",
+            "reference_temperature = 20.0\nspace = \"serendipity\"",
+            "heat.space",
+        ),
+        (
             "kind = \"plane_stress\"",
             "kind = \"plane_strain\"",
             "heat.faces",

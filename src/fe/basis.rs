@@ -47,7 +47,7 @@ pub fn shape_1d(p: usize, x: f64, values: &mut [f64], derivatives: &mut [f64]) {
 /// `TensorProduct` is Q_p (all `x^a y^b` with a, b <= p); `Trunk` is the
 /// trunk/serendipity space (all `x^a y^b` with a + b <= p plus `x^p y`,
 /// `x y^p`), which has the same boundary modes but fewer internal ones.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Space {
     /// Full tensor-product space Q_p: (p+1)² modes.
     TensorProduct,

@@ -27,12 +27,14 @@
 //!
 //! Unlike the elasticity, the internal modes are kept: the capacity couples them in time, so
 //! static condensation would not be exact. The *full* numbering is the scalar boundary dofs
-//! ([`DofMap::scalar`]) followed by each element's internal modes. A held temperature is a
+//! ([`DofMap::scalar`]) followed by each element's internal modes, as many as its space has
+//! ([`spaces`]: the tensor-product space along the contact, the trunk space elsewhere by
+//! default). A held temperature is a
 //! constant along its edge: its vertex dofs take the value, its edge modes zero; held dofs
 //! are eliminated, and the matrices are over the *free* dofs only (positive definite unless
 //! no edge holds or convects and no face convects: then K has the constants in its kernel).
 
-use crate::basis::{QuadBasis, Space};
+use crate::basis::Space;
 use crate::dofs::DofMap;
 use crate::geometry::Point;
 use crate::material::ThermalMaterial;
@@ -48,12 +50,14 @@ pub mod closed_forms;
 mod element;
 mod krylov;
 pub mod reduced;
+pub mod spaces;
 pub mod transient;
 pub use advection::Flow;
 pub use balance::HeatFlows;
 use blocks::{assemble_pair, Block, BlockOperator, PairedMatrices};
 pub use element::piece_quadrature;
-use element::{convection_block, element_matrices, element_unknowns, ElementMatrices};
+use element::{convection_block, element_matrices, ElementMatrices};
+pub use spaces::ElementSpaces;
 
 /// Errors of the conduction stage.
 #[derive(Debug, thiserror::Error)]
@@ -151,8 +155,11 @@ pub struct ConductionSpec {
     pub name: String,
     /// Degree and space of the elements.
     pub p: usize,
-    /// Tensor-product or trunk space.
+    /// The elements' space: tensor-product or trunk.
     pub space: Space,
+    /// Elements in the tensor-product space whatever `space` is: where the heat enters in a
+    /// thin layer ([`spaces`]).
+    pub tensor_elements: Vec<usize>,
     /// Thickness t, mm.
     pub thickness: f64,
     /// Thermal properties indexed by the elements' `material`; None for a material without.
@@ -174,8 +181,8 @@ pub struct ConductionBody {
     pub name: String,
     /// The mesh.
     pub mesh: Mesh,
-    /// The shape functions.
-    pub basis: QuadBasis,
+    /// Each element's space and shape functions.
+    pub spaces: ElementSpaces,
     /// Scalar numbering of the boundary dofs.
     pub dofs: DofMap,
     /// Thickness t, mm.
@@ -228,14 +235,14 @@ pub fn add_product(a: &SparseColMat<usize, f64>, x: &[f64], y: &mut [f64]) {
 impl ConductionBody {
     /// Build the operators of one body on `mesh`.
     pub fn new(mesh: &Mesh, spec: &ConductionSpec) -> Result<ConductionBody, ConductionError> {
-        let basis = QuadBasis::new(spec.p, spec.space);
         let dofs = DofMap::scalar(mesh, spec.p);
-        let n_full = dofs.n_dofs() + mesh.elements.len() * basis.n_internal();
+        let spaces = ElementSpaces::new(mesh, &dofs, spec.p, spec.space, &spec.tensor_elements);
+        let n_full = spaces.n_full();
         let face = spec.faces.map_or(0.0, |f| f.coefficient);
         let mut conductivity_blocks = Vec::with_capacity(mesh.elements.len());
         let mut capacity_blocks = Vec::with_capacity(mesh.elements.len());
         let mut load = vec![0.0; n_full];
-        let mut cache: HashMap<Vec<i64>, ElementMatrices> = HashMap::new();
+        let mut cache: HashMap<(Vec<i64>, Space), ElementMatrices> = HashMap::new();
         for element in 0..mesh.elements.len() {
             let m = mesh.elements[element].material;
             let material = spec.materials.get(m).copied().flatten().filter(|t| {
@@ -248,11 +255,15 @@ impl ConductionBody {
                 });
             };
             let nq = crate::elasticity::quadrature_points(mesh, element, spec.p);
-            let key = crate::elasticity::geometry_key(mesh, element, m, nq);
+            let basis = spaces.basis(element);
+            let key = (
+                crate::elasticity::geometry_key(mesh, element, m, nq),
+                basis.space,
+            );
             let matrices = cache.entry(key).or_insert_with(|| {
-                element_matrices(mesh, element, &basis, &material, spec.thickness, face, nq)
+                element_matrices(mesh, element, basis, &material, spec.thickness, face, nq)
             });
-            let unknowns = element_unknowns(mesh, &dofs, &basis, element);
+            let unknowns = spaces.unknowns(mesh, &dofs, element);
             if let Some(f) = spec.faces {
                 for (a, &(ga, sa)) in unknowns.iter().enumerate() {
                     // The face sink's ambient part: 2 h_f T∞ ∫ N_a dA = 2 h_f T∞ (t ∫N_a dA)/t.
@@ -270,7 +281,7 @@ impl ConductionBody {
             });
         }
         let (advection_blocks, inflow_enthalpy) = match &spec.flow {
-            Some(flow) => advection::flow_blocks(mesh, &dofs, &basis, spec, flow, &mut load),
+            Some(flow) => advection::flow_blocks(mesh, &dofs, &spaces, spec, flow, &mut load),
             None => (Vec::new(), 0.0),
         };
         conductivity_blocks.extend(advection_blocks.iter().cloned());
@@ -283,7 +294,7 @@ impl ConductionBody {
                 } => conductivity_blocks.push(convection_block(
                     mesh,
                     &dofs,
-                    &basis,
+                    &spaces,
                     piece,
                     spec.thickness * coefficient,
                     ambient,
@@ -298,8 +309,8 @@ impl ConductionBody {
                             to: piece.t[1],
                         });
                     }
-                    let trace = basis.edge_trace(piece.local);
-                    let unknowns = element_unknowns(mesh, &dofs, &basis, piece.element);
+                    let trace = spaces.basis(piece.element).edge_trace(piece.local);
+                    let unknowns = spaces.unknowns(mesh, &dofs, piece.element);
                     for (k, &mode) in trace.iter().enumerate() {
                         // Vertex modes take the value; edge modes are zero for a constant.
                         held[unknowns[mode].0] = Some(if k < 2 { value } else { 0.0 });
@@ -337,7 +348,7 @@ impl ConductionBody {
         Ok(ConductionBody {
             name: spec.name.clone(),
             mesh: mesh.clone(),
-            basis,
+            spaces,
             dofs,
             thickness: spec.thickness,
             free_of,
@@ -469,8 +480,9 @@ impl ConductionBody {
 
     /// The temperature at reference point (ξ, η) of `element` as (unknown, coefficient) pairs.
     pub fn point_trace(&self, element: usize, xi: f64, eta: f64) -> Vec<(usize, f64)> {
-        let tab = self.basis.tabulate(&[xi], &[eta]);
-        element_unknowns(&self.mesh, &self.dofs, &self.basis, element)
+        let tab = self.spaces.basis(element).tabulate(&[xi], &[eta]);
+        self.spaces
+            .unknowns(&self.mesh, &self.dofs, element)
             .into_iter()
             .zip(&tab.values)
             .map(|((g, s), &v)| (g, s * v))
@@ -515,7 +527,7 @@ impl ConductionBody {
     /// The load (mW per full unknown) of a uniform inward flux `q` (mW/mm²) on `piece`.
     pub fn edge_flux_load(&self, piece: &EdgePiece, q: f64) -> Vec<f64> {
         let mut load = vec![0.0; self.n_full()];
-        for (tp, ds) in piece_quadrature(&self.mesh, piece, self.basis.p + 2) {
+        for (tp, ds) in piece_quadrature(&self.mesh, piece, self.spaces.p() + 2) {
             for (g, c) in self.edge_trace(piece.element, piece.local, tp) {
                 load[g] += q * c * ds * self.thickness;
             }

@@ -113,7 +113,11 @@ pub struct TemperatureField {
 impl TemperatureField {
     /// T − T_ref (K) at reference point (ξ, η) of `element` of `body`.
     pub fn rise_at_reference(&self, body: &ElasticBody, element: usize, xi: f64, eta: f64) -> f64 {
-        let tab = body.basis.tabulate(&[xi], &[eta]);
+        debug_assert_eq!(self.loads.temperature_basis(element).p, body.basis.p);
+        let tab = self
+            .loads
+            .temperature_basis(element)
+            .tabulate(&[xi], &[eta]);
         self.rise[element]
             .iter()
             .zip(&tab.values)

@@ -48,6 +48,9 @@ pub struct HeatSpec {
     /// Conditions of named edges.
     #[serde(default)]
     pub edges: Vec<HeatEdgeSpec>,
+    /// The temperature's polynomial space: "auto" (default: `analysis.space` in the elements
+    /// along the contact, the trunk space elsewhere), "tensor" or "trunk" everywhere.
+    pub space: Option<String>,
 }
 
 fn twenty() -> f64 {
@@ -97,6 +100,19 @@ pub struct HeatEdgeSpec {
     pub insulated: Option<bool>,
 }
 
+/// The temperature's polynomial space (`heat.space`), at each element's displacement degree.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HeatSpace {
+    /// The displacement's space (`analysis.space`) in the elements along the contact, where
+    /// the heat enters in a thin layer, and the trunk space elsewhere
+    /// ([`crate::conduction::spaces`]).
+    Auto,
+    /// The tensor-product space in every element.
+    Tensor,
+    /// The trunk space in every element.
+    Trunk,
+}
+
 /// How the frictional heat is shared between the bodies.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Partition {
@@ -135,6 +151,8 @@ pub struct HeatSettings {
     pub ambient: f64,
     /// How the frictional heat is shared.
     pub partition: Partition,
+    /// The temperature's polynomial space.
+    pub space: HeatSpace,
     /// Convection from the faces of a plane-stress plate.
     pub faces: Option<FaceConvection>,
     /// Thermal properties of each material (in `spec.materials` order).
@@ -224,6 +242,17 @@ impl Problem {
                 ));
             }
         };
+        let space = match heat.space.as_deref() {
+            None | Some("auto") => HeatSpace::Auto,
+            Some("tensor") => HeatSpace::Tensor,
+            Some("trunk") => HeatSpace::Trunk,
+            Some(other) => {
+                return Err(self.error(
+                    "heat.space",
+                    format!("must be \"auto\", \"tensor\" or \"trunk\"; got \"{other}\""),
+                ))
+            }
+        };
         let b1 = self.body_index(&contact.body).map_err(|e| ProblemError {
             key: "contact.body".into(),
             ..e
@@ -281,6 +310,7 @@ impl Problem {
             initial,
             ambient,
             partition,
+            space,
             faces,
             materials,
             bodies: [body1, body2],

@@ -21,7 +21,7 @@
 //! and t ∫ ρc |w·n| T_in N_a ds in the load. A held temperature on that edge overrides it.
 
 use super::blocks::Block;
-use super::{element_unknowns, piece_quadrature, ConductionSpec, EdgePiece};
+use super::{piece_quadrature, ConductionSpec, EdgePiece, ElementSpaces};
 use crate::basis::QuadBasis;
 use crate::dofs::DofMap;
 use crate::geometry::Point;
@@ -113,7 +113,7 @@ pub fn element_block(
 pub(super) fn flow_blocks(
     mesh: &Mesh,
     dofs: &DofMap,
-    basis: &QuadBasis,
+    spaces: &ElementSpaces,
     spec: &ConductionSpec,
     flow: &Flow,
     load: &mut [f64],
@@ -127,11 +127,11 @@ pub(super) fn flow_blocks(
             element_block(
                 mesh,
                 element,
-                basis,
+                spaces.basis(element),
                 &material_of(element),
                 spec.thickness,
                 flow,
-                element_unknowns(mesh, dofs, basis, element),
+                spaces.unknowns(mesh, dofs, element),
             )
         })
         .collect();
@@ -140,8 +140,9 @@ pub(super) fn flow_blocks(
         let (element, local) = edge.elements[0];
         let piece = EdgePiece::whole(element, local);
         let heat_capacity = material_of(element).heat_capacity;
+        let basis = spaces.basis(element);
         let trace = basis.edge_trace(local);
-        let unknowns = element_unknowns(mesh, dofs, basis, element);
+        let unknowns = spaces.unknowns(mesh, dofs, element);
         let n = trace.len();
         let mut matrix = Mat::<f64>::zeros(n, n);
         let mut vector = vec![0.0; n];

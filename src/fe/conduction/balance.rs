@@ -2,7 +2,7 @@
 //! faces, held edges and, for a flowing body, with its material.
 
 use super::blocks::BlockOperator;
-use super::element::{element_unknowns, piece_quadrature};
+use super::element::piece_quadrature;
 use super::{ConductionBody, EdgeCondition, FaceConvection};
 use crate::quadrature::gauss_legendre;
 
@@ -22,7 +22,7 @@ impl ConductionBody {
 
     /// The element's modes as (full unknown, sign) pairs, in the basis's mode order.
     pub fn element_unknowns(&self, element: usize) -> Vec<(usize, f64)> {
-        element_unknowns(&self.mesh, &self.dofs, &self.basis, element)
+        self.spaces.unknowns(&self.mesh, &self.dofs, element)
     }
 
     /// Heat stored in `field` relative to the uniform temperature `reference` (mJ):
@@ -48,7 +48,7 @@ impl ConductionBody {
                 ambient,
             } = *condition
             {
-                for (tp, ds) in piece_quadrature(&self.mesh, piece, self.basis.p + 2) {
+                for (tp, ds) in piece_quadrature(&self.mesh, piece, self.spaces.p() + 2) {
                     let t: f64 = self
                         .edge_trace(piece.element, piece.local, tp)
                         .iter()
@@ -107,10 +107,13 @@ impl ConductionBody {
     fn face_loss(&self, field: &[f64], faces: FaceConvection) -> f64 {
         let mut loss = 0.0;
         for element in 0..self.mesh.elements.len() {
-            let nq = crate::elasticity::quadrature_points(&self.mesh, element, self.basis.p);
+            let nq = crate::elasticity::quadrature_points(&self.mesh, element, self.spaces.p());
             let rule = gauss_legendre(nq);
-            let tab = self.basis.tabulate(&rule.points, &rule.points);
-            let unknowns = element_unknowns(&self.mesh, &self.dofs, &self.basis, element);
+            let tab = self
+                .spaces
+                .basis(element)
+                .tabulate(&rule.points, &rule.points);
+            let unknowns = self.element_unknowns(element);
             for iy in 0..nq {
                 for ix in 0..nq {
                     let q = iy * nq + ix;

@@ -148,7 +148,10 @@ pub fn moving_band_case(
     let spec = ConductionSpec {
         name: "moving band".into(),
         p,
-        space: Space::TensorProduct,
+        // The spaces of a run's heat ([`super::spaces`]): the tensor-product space where the
+        // heat enters, the trunk space below.
+        space: Space::Trunk,
+        tensor_elements: pieces("top").iter().map(|piece| piece.element).collect(),
         thickness: 10.0,
         materials: vec![Some(ThermalMaterial::from_engineering(
             50.0, 460.0, 7800.0, 1.2e-5,

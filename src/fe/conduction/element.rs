@@ -1,8 +1,8 @@
 //! The integrals of one element and one edge piece: the conductivity and capacity blocks, the
-//! convection of an edge, and where an element's modes sit among the body's unknowns.
+//! convection of an edge.
 
 use super::blocks::Block;
-use super::EdgePiece;
+use super::{EdgePiece, ElementSpaces};
 use crate::basis::QuadBasis;
 use crate::dofs::DofMap;
 use crate::material::ThermalMaterial;
@@ -71,28 +71,6 @@ pub(super) fn element_matrices(
     }
 }
 
-/// The full unknown of each of an element's modes, with its sign.
-pub(super) fn element_unknowns(
-    mesh: &Mesh,
-    dofs: &DofMap,
-    basis: &QuadBasis,
-    element: usize,
-) -> Vec<(usize, f64)> {
-    let ed = dofs.element_dofs(mesh, element);
-    let nb = basis.n_boundary();
-    let ni = basis.n_internal();
-    let first_internal = dofs.n_dofs() + element * ni;
-    (0..basis.n_modes())
-        .map(|a| {
-            if a < nb {
-                (ed.global[a], ed.sign[a])
-            } else {
-                (first_internal + a - nb, 1.0)
-            }
-        })
-        .collect()
-}
-
 /// Gauss points (t, ds) on an edge piece: `n` points, ds the arc-length weight in mm.
 pub fn piece_quadrature(mesh: &Mesh, piece: &EdgePiece, n: usize) -> Vec<(f64, f64)> {
     let rule = gauss_legendre(n);
@@ -113,14 +91,15 @@ pub fn piece_quadrature(mesh: &Mesh, piece: &EdgePiece, n: usize) -> Vec<(f64, f
 pub(super) fn convection_block(
     mesh: &Mesh,
     dofs: &DofMap,
-    basis: &QuadBasis,
+    spaces: &ElementSpaces,
     piece: &EdgePiece,
     th: f64,
     ambient: f64,
     load: &mut [f64],
 ) -> Block {
+    let basis = spaces.basis(piece.element);
     let trace = basis.edge_trace(piece.local);
-    let element = element_unknowns(mesh, dofs, basis, piece.element);
+    let element = spaces.unknowns(mesh, dofs, piece.element);
     let n = trace.len();
     let mut matrix = Mat::<f64>::zeros(n, n);
     let mut vector = vec![0.0; n];

@@ -3,31 +3,55 @@
 //! (α′ = α in plane stress, (1 + ν) α in plane strain, [`Material::thermal_stress_per_kelvin`]),
 //! so the load is f_a = t ∫ B_aᵀ D ε_th dA = t ∫ B_aᵀ s ΔT dA with s = D m α′.
 //!
-//! Per element, over the temperature's modes b (the same basis, one unknown per mode):
+//! Per element, over the temperature's modes b (the same degree; its own space, which may have
+//! fewer internal modes than the displacement's, [`crate::basis::Space`]):
 //! F[(2a + c), b] = t ∫ ∂N_a/∂x_c s_c N_b dA. The internal displacement modes are condensed
 //! as the stiffness was: the boundary load is (F_b − Rᵀ F_i) ΔT and the internal modes are
 //! recovered as u_i = K_ii⁻¹ F_i ΔT − R u_b. Both matrices are kept per element type (equal
 //! geometry up to a translation, material and quadrature), as the stiffness is.
 
 use super::{element_stiffness, ElasticBody};
+use crate::basis::{QuadBasis, Space};
 use crate::material::Material;
 use crate::quadrature::gauss_legendre;
 use faer::linalg::solvers::Solve;
 use faer::{Mat, Side};
+use std::collections::HashMap;
 
 /// The thermal load operators of one body.
 #[derive(Clone, Debug)]
 pub struct ThermalLoads {
-    /// Per element type: the condensed boundary load per unit ΔT mode, (F_b − Rᵀ F_i)
-    /// (N/K, 2·4p × n_modes), and the internal response K_ii⁻¹ F_i (mm/K).
+    /// Per pair of element type and temperature space: the condensed boundary load per unit
+    /// ΔT mode, (F_b − Rᵀ F_i) (N/K, 2·4p × the temperature's modes), and the internal
+    /// response K_ii⁻¹ F_i (mm/K).
     types: Vec<(Mat<f64>, Mat<f64>)>,
+    /// Per element: its entry of `types`.
+    type_of: Vec<usize>,
     /// Expansion coefficient α (1/K) of each material.
     pub expansion: Vec<f64>,
+    /// The temperature's bases at the displacement's degree: tensor-product and trunk.
+    temperature_bases: [QuadBasis; 2],
+    /// Per element: the temperature's space (index into `temperature_bases`).
+    space_of: Vec<usize>,
+}
+
+impl ThermalLoads {
+    /// The temperature's basis on `element` (its modes are the columns of the element's load).
+    pub fn temperature_basis(&self, element: usize) -> &QuadBasis {
+        &self.temperature_bases[self.space_of[element]]
+    }
+
+    /// The entry of `element` among the loads of distinct elements (elements of equal
+    /// geometry, material, quadrature and temperature space share one).
+    pub fn load_type(&self, element: usize) -> usize {
+        self.type_of[element]
+    }
 }
 
 /// F of one element (2 n_modes × n_modes), N/K.
 fn coupling_matrix(
     body: &ElasticBody,
+    temperature_basis: &QuadBasis,
     element: usize,
     material: &Material,
     alpha: f64,
@@ -37,7 +61,9 @@ fn coupling_matrix(
     let nq = super::quadrature_points(mesh, element, basis.p);
     let rule = gauss_legendre(nq);
     let tab = basis.tabulate(&rule.points, &rule.points);
+    let temperature = temperature_basis.tabulate(&rule.points, &rule.points);
     let n = basis.n_modes();
+    let n_temperature = temperature_basis.n_modes();
     let s = material.thermal_stress_per_kelvin(body.analysis, alpha);
     // Heat needs contact, which axisymmetric bodies do not have yet (refused with it).
     let t = body
@@ -49,7 +75,7 @@ fn coupling_matrix(
     // the matrix's strided writes, it cost as much as the rest of the heat's elastic set-up.
     let points = nq * nq;
     let mut gradients = Mat::<f64>::zeros(2 * n, points);
-    let mut values = Mat::<f64>::zeros(n, points);
+    let mut values = Mat::<f64>::zeros(n_temperature, points);
     for iy in 0..nq {
         for ix in 0..nq {
             let q = iy * nq + ix;
@@ -62,7 +88,9 @@ fn coupling_matrix(
                 let (nxi, neta) = (tab.d_xi[idx], tab.d_eta[idx]);
                 gradients[(2 * a, q)] = (nxi * dxi_dx + neta * deta_dx) * s[0] * w;
                 gradients[(2 * a + 1, q)] = (nxi * dxi_dz + neta * deta_dz) * s[1] * w;
-                values[(a, q)] = tab.values[idx];
+            }
+            for b in 0..n_temperature {
+                values[(b, q)] = temperature.values[b * temperature.n_points + q];
             }
         }
     }
@@ -71,22 +99,40 @@ fn coupling_matrix(
 
 impl ElasticBody {
     /// The thermal load operators of this body for the expansion coefficients `expansion`
-    /// (1/K, one per material). Recomputes each element type's stiffness once (its internal
-    /// block is needed to condense the load).
-    pub fn thermal_loads(&self, expansion: &[f64]) -> Result<ThermalLoads, super::ElasticityError> {
+    /// (1/K, one per material) and a temperature at the body's degree in the space
+    /// `temperature_spaces[e]` on element e. Recomputes each element type's stiffness once
+    /// (its internal block is needed to condense the load).
+    pub fn thermal_loads(
+        &self,
+        expansion: &[f64],
+        temperature_spaces: &[Space],
+    ) -> Result<ThermalLoads, super::ElasticityError> {
+        let temperature_bases = [
+            QuadBasis::new(self.basis.p, Space::TensorProduct),
+            QuadBasis::new(self.basis.p, Space::Trunk),
+        ];
+        let space_of: Vec<usize> = (0..self.mesh.elements.len())
+            .map(|e| usize::from(temperature_spaces.get(e) == Some(&Space::Trunk)))
+            .collect();
         let nb = 2 * self.basis.n_boundary();
-        let mut types: Vec<Option<(Mat<f64>, Mat<f64>)>> = vec![None; self.types.len()];
+        let mut types = Vec::new();
+        let mut first_of: HashMap<(usize, usize), usize> = HashMap::new();
+        let mut type_of = Vec::with_capacity(self.mesh.elements.len());
         for element in 0..self.mesh.elements.len() {
-            let ty = self.element_type[element];
-            if types[ty].is_some() {
+            let key = (self.element_type[element], space_of[element]);
+            if let Some(&t) = first_of.get(&key) {
+                type_of.push(t);
                 continue;
             }
+            first_of.insert(key, types.len());
+            type_of.push(types.len());
             let m = self.mesh.elements[element].material;
             let material = &self.materials[m];
-            let f = coupling_matrix(self, element, material, expansion[m]);
+            let temperature_basis = &temperature_bases[space_of[element]];
+            let f = coupling_matrix(self, temperature_basis, element, material, expansion[m]);
             let n = f.nrows();
             let ni = n - nb;
-            let condensed_recovery = &self.types[ty].recovery;
+            let condensed_recovery = &self.types[key.0].recovery;
             let (load, internal) = if ni == 0 {
                 (f.clone(), Mat::zeros(0, f.ncols()))
             } else {
@@ -108,12 +154,14 @@ impl ElasticBody {
                 let load = f.submatrix(0, 0, nb, f.ncols()) - condensed_recovery.transpose() * fi;
                 (load, internal)
             };
-            types[ty] = Some((load, internal));
+            types.push((load, internal));
         }
         Ok(ThermalLoads {
-            // Every type has an element, so every entry was filled.
-            types: types.into_iter().flatten().collect(),
+            types,
+            type_of,
             expansion: expansion.to_vec(),
+            temperature_bases,
+            space_of,
         })
     }
 
@@ -136,7 +184,7 @@ impl ElasticBody {
         for element in 0..self.mesh.elements.len() {
             let dt = rise(element);
             let ed = self.dofs.element_dofs(&self.mesh, element);
-            let f = &loads.types[self.element_type[element]].0;
+            let f = &loads.types[loads.type_of[element]].0;
             for (r, (&g, &s)) in ed.global.iter().zip(&ed.sign).enumerate() {
                 let v: f64 = (0..f.ncols()).map(|b| f[(r, b)] * dt[b]).sum();
                 load[g] += s * v;
@@ -156,7 +204,7 @@ impl ElasticBody {
         let mut u = self.recover(boundary);
         let nb = 2 * self.basis.n_boundary();
         for (element, local) in u.local.iter_mut().enumerate() {
-            let z = &loads.types[self.element_type[element]].1;
+            let z = &loads.types[loads.type_of[element]].1;
             if z.nrows() == 0 {
                 continue;
             }
@@ -168,17 +216,11 @@ impl ElasticBody {
         u
     }
 
-    /// The per-element type index (elements of equal geometry, material and quadrature share
-    /// one): a caller that builds per-element operators can reuse its work per type.
-    pub fn element_type(&self, element: usize) -> usize {
-        self.element_type[element]
-    }
-
     /// The condensed boundary load per unit temperature mode of `element` (N/K, rows in the
     /// order of [`crate::dofs::DofMap::element_dofs`] without signs, columns the
     /// temperature's modes without signs).
     pub fn thermal_load_matrix<'a>(&self, loads: &'a ThermalLoads, element: usize) -> &'a Mat<f64> {
-        &loads.types[self.element_type[element]].0
+        &loads.types[loads.type_of[element]].0
     }
 }
 
@@ -241,15 +283,18 @@ mod tests {
         .unwrap()
     }
 
-    /// The rise's coefficients on each element's modes for a field linear in x and z: the
-    /// vertex values (a linear field is linear along every straight edge: no edge modes).
+    /// The rise's coefficients on each element's temperature modes for a field linear in x
+    /// and z: the vertex values (a linear field is linear along every straight edge: no edge
+    /// modes).
     fn linear_rise<'a>(
         body: &'a ElasticBody,
+        loads: &'a super::ThermalLoads,
         field: impl Fn([f64; 2]) -> f64 + 'a,
     ) -> impl Fn(usize) -> Vec<f64> + 'a {
         move |element| {
             let vertices = body.mesh.elements[element].vertices;
-            body.basis
+            loads
+                .temperature_basis(element)
                 .modes
                 .iter()
                 .map(|m| match m.kind {
@@ -260,16 +305,30 @@ mod tests {
         }
     }
 
+    /// The displacement of a temperature `field` (linear) in the displacement's space.
     fn solve(
         body: &ElasticBody,
         field: impl Fn([f64; 2]) -> f64 + Copy,
     ) -> crate::elasticity::Displacement {
-        let loads = body.thermal_loads(&[ALPHA]).unwrap();
-        let load = body.thermal_load_vector(&loads, linear_rise(body, field));
+        solve_in(
+            body,
+            field,
+            &vec![body.basis.space; body.mesh.elements.len()],
+        )
+    }
+
+    /// The same with the temperature in `spaces` (one per element).
+    fn solve_in(
+        body: &ElasticBody,
+        field: impl Fn([f64; 2]) -> f64 + Copy,
+        spaces: &[Space],
+    ) -> crate::elasticity::Displacement {
+        let loads = body.thermal_loads(&[ALPHA], spaces).unwrap();
+        let load = body.thermal_load_vector(&loads, linear_rise(body, &loads, field));
         let mut rhs = faer::Mat::from_fn(load.len(), 1, |i, _| load[i]);
         body.solve_in_place(&mut rhs).unwrap();
         let boundary = (0..load.len()).map(|i| rhs[(i, 0)]).collect();
-        body.recover_thermal(boundary, &loads, linear_rise(body, field))
+        body.recover_thermal(boundary, &loads, linear_rise(body, &loads, field))
     }
 
     #[test]
@@ -286,7 +345,9 @@ mod tests {
             for p in [1, 3, 8] {
                 let body = strip(analysis, p);
                 let u = solve(&body, |_| rise);
-                let loads = body.thermal_loads(&[ALPHA]).unwrap();
+                let loads = body
+                    .thermal_loads(&[ALPHA], &vec![body.basis.space; body.mesh.elements.len()])
+                    .unwrap();
                 for x in [[60.0, 4.0], [30.0, 0.0], [45.0, 8.0], [7.0, 1.0]] {
                     let v = body.values_at(&u, x).unwrap();
                     let exact = [free * rise * x[0], free * rise * (x[1] - 4.0)];
@@ -324,16 +385,25 @@ mod tests {
         ] {
             for p in [2, 6] {
                 let body = strip(analysis, p);
-                let u = solve(&body, |x| b * (x[1] - 4.0));
-                let kappa = free * b;
-                let sag = kappa * 30.0 * 30.0 / 2.0;
-                for x in [7.5, 30.0, 41.0] {
-                    let uz = body.values_at(&u, [x, 4.0]).unwrap().displacement[1];
-                    let exact = kappa * x * (60.0 - x) / 2.0;
-                    assert!(
-                        (uz - exact).abs() < 1e-9 * sag,
-                        "{analysis:?} p = {p} x = {x}: {uz} vs {exact}"
-                    );
+                // The temperature in the displacement's space, and with every other element
+                // in the trunk space (as a run's heat away from the contact): the linear
+                // field is in both, so the bending is the same.
+                let n = body.mesh.elements.len();
+                let mixed: Vec<Space> = (0..n)
+                    .map(|e| [Space::TensorProduct, Space::Trunk][e % 2])
+                    .collect();
+                for spaces in [vec![Space::TensorProduct; n], mixed] {
+                    let u = solve_in(&body, |x| b * (x[1] - 4.0), &spaces);
+                    let kappa = free * b;
+                    let sag = kappa * 30.0 * 30.0 / 2.0;
+                    for x in [7.5, 30.0, 41.0] {
+                        let uz = body.values_at(&u, [x, 4.0]).unwrap().displacement[1];
+                        let exact = kappa * x * (60.0 - x) / 2.0;
+                        assert!(
+                            (uz - exact).abs() < 1e-9 * sag,
+                            "{analysis:?} p = {p} x = {x}: {uz} vs {exact}"
+                        );
+                    }
                 }
             }
         }
@@ -401,6 +471,7 @@ mod tests {
                     name: "arc".into(),
                     p,
                     space: Space::TensorProduct,
+                    tensor_elements: vec![],
                     thickness: 3.0,
                     materials: vec![Some(ThermalMaterial::from_engineering(
                         50.0, 460.0, 7800.0, ALPHA,
@@ -428,7 +499,9 @@ mod tests {
                     .map(|&(g, s)| s * field[g])
                     .collect()
             };
-            let loads = body.thermal_loads(&[ALPHA]).unwrap();
+            let loads = body
+                .thermal_loads(&[ALPHA], &vec![body.basis.space; body.mesh.elements.len()])
+                .unwrap();
             let load = body.thermal_load_vector(&loads, rise);
             let mut rhs = faer::Mat::from_fn(load.len(), 1, |i, _| load[i]);
             body.solve_in_place(&mut rhs).unwrap();

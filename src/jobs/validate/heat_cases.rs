@@ -57,7 +57,9 @@ fn pieces(mesh: &Mesh, name: &str) -> Vec<EdgePiece> {
     EdgePiece::named(mesh, name)
 }
 
-/// A body of steel on `mesh` at p = 8 with `edges` and `faces`, thickness `t` mm.
+/// A body of steel on `mesh` at p = 8 with `edges` and `faces`, thickness `t` mm, in the
+/// spaces of a run's heat ([`crate::conduction::spaces`]): the tensor-product space in the
+/// elements along its top edge, where the cases' heat enters, the trunk space elsewhere.
 fn body(
     mesh: &Mesh,
     t: f64,
@@ -69,7 +71,8 @@ fn body(
         &ConductionSpec {
             name: "block".into(),
             p: 8,
-            space: Space::TensorProduct,
+            space: Space::Trunk,
+            tensor_elements: pieces(mesh, "top").iter().map(|p| p.element).collect(),
             thickness: t,
             materials: vec![Some(steel())],
             edges,
@@ -268,7 +271,9 @@ fn thermal_displacement(
     rise: impl Fn(Point) -> f64,
     at: Point,
 ) -> Result<[f64; 2], String> {
-    let loads = body.thermal_loads(&[1.2e-5]).map_err(|e| e.to_string())?;
+    let loads = body
+        .thermal_loads(&[1.2e-5], &vec![body.basis.space; body.mesh.elements.len()])
+        .map_err(|e| e.to_string())?;
     let coefficients = |element: usize| -> Vec<f64> {
         let vertices = body.mesh.elements[element].vertices;
         body.basis

@@ -4,9 +4,11 @@
 
 use super::counterface::counterface_flow;
 use super::{Sliding, ThermalBodies, ThermalError};
+use crate::basis::Space;
 use crate::conduction::{ConductionBody, ConductionSpec, EdgePiece};
 use crate::contact::CondensedContact;
 use crate::elasticity::ElasticBody;
+use crate::heat_input::HeatSpace;
 
 /// The conduction spec of contact body `b`: its edge conditions, and for body 2 the part of
 /// its contact edge that body 1 does not cover and, under monotonic sliding, the motion of its
@@ -32,10 +34,25 @@ pub(super) fn conduction_spec(
         }
         _ => None,
     };
+    // The heat enters along the contact edge in a layer far thinner than an element: there
+    // the temperature keeps the displacement's space by default ([`crate::conduction::spaces`]).
+    let (space, tensor_elements) = match settings.space {
+        HeatSpace::Tensor => (Space::TensorProduct, Vec::new()),
+        HeatSpace::Trunk => (Space::Trunk, Vec::new()),
+        HeatSpace::Auto if input.space == Space::Trunk => (Space::Trunk, Vec::new()),
+        HeatSpace::Auto => (
+            Space::Trunk,
+            heat.contact_edge
+                .iter()
+                .map(|&(element, _)| element)
+                .collect(),
+        ),
+    };
     Ok(ConductionSpec {
         name: body.name.clone(),
         p: body.dofs.p,
-        space: input.space,
+        space,
+        tensor_elements,
         // Heat needs contact, which axisymmetric bodies do not have yet (refused with it).
         thickness: body
             .analysis

@@ -56,7 +56,8 @@ pub struct ThermalBodies<'a> {
     pub contact: &'a CondensedContact,
     /// The `[heat]` section.
     pub settings: &'a HeatSettings,
-    /// The elements' polynomial space.
+    /// The displacement's polynomial space (`analysis.space`); the temperature's follows
+    /// from it and `heat.space` ([`crate::heat_input::HeatSpace`]).
     pub space: Space,
     /// The sliding (time profile of the heat).
     pub sliding: Sliding,
@@ -583,15 +584,18 @@ fn thermal_loads_and_gap(
 ) -> Result<([Arc<ThermalLoads>; 2], GapOutput), ThermalError> {
     let settings = input.settings;
     let expansion: Vec<f64> = settings.materials.iter().map(|m| m.expansion).collect();
-    let of_body = |body: &ElasticBody| {
-        body.thermal_loads(&expansion)
+    let of_body = |body: &ElasticBody, heat: &ConductionBody| {
+        body.thermal_loads(&expansion, &heat.spaces.each())
             .map(Arc::new)
             .map_err(|e| ThermalError::Elastic {
                 body: body.name.clone(),
                 message: e.to_string(),
             })
     };
-    let (first, second) = rayon::join(|| of_body(input.elastic[0]), || of_body(input.elastic[1]));
+    let (first, second) = rayon::join(
+        || of_body(input.elastic[0], &thermal[0]),
+        || of_body(input.elastic[1], &thermal[1]),
+    );
     let loads: [Arc<ThermalLoads>; 2] = [first?, second?];
     let gap = thermal_gap(
         input.elastic,

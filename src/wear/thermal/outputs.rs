@@ -196,7 +196,7 @@ pub fn thermal_gap(
                     None => (0, 0.0),
                 })
                 .collect();
-            let ty = body.element_type(element);
+            let ty = loads.load_type(element);
             if types.len() <= ty {
                 types.resize(ty + 1, None);
             }
@@ -248,7 +248,7 @@ pub(super) fn boundary_samples(
     body: &ConductionBody,
     contact_edge: &[(usize, usize)],
 ) -> Vec<Vec<(usize, f64)>> {
-    let lobatto = gauss_lobatto(body.basis.p + 1).points;
+    let lobatto = gauss_lobatto(body.spaces.p() + 1).points;
     let mut samples = Vec::new();
     for (element, local, _) in crate::heat_input::boundary_edges(&body.mesh) {
         let points: &[f64] = if contact_edge.contains(&(element, local)) {
