@@ -60,7 +60,7 @@ pub mod counterface;
 mod outputs;
 pub mod shapes;
 mod stepping;
-pub use build::{CoupledSystem, ThermalBodies, ThermalError, SHIFTS};
+pub use build::{CoupledSystem, ThermalBodies, ThermalError, FLOWING_SHIFTS, SHIFTS};
 pub use outputs::{GapOutput, Output};
 pub use stepping::ThermalState;
 

@@ -32,8 +32,9 @@
 //! directions kept so far, 4 N r m flops a pass: the set-up grows as N r m, and r itself
 //! grows with m (the blocks of all shifts together keep half to two thirds of their
 //! directions). So the caller keeps m small: the run's contact heat enters as a few smooth
-//! shapes along the contact, not one input per point (`wear::thermal::shapes`: 35 inputs
-//! and 202 modes instead of 67 and 305 on punch-b40-heat). The basis is built in
+//! shapes along the contact, not one input per point (`wear::thermal::shapes`: 24 inputs
+//! and 165 modes instead of 67 and 305 on punch-b40-heat), and N small: most elements'
+//! temperature is in the trunk space (`super::spaces`: 3 953 unknowns instead of 6 809). The basis is built in
 //! the module `krylov`: the shifts factorised and solved two at a time (as many as there are
 //! threads), the dense products of the Gram–Schmidt, of VᵀKV and of the modes split by rows
 //! among the threads.

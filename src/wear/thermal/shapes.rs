@@ -18,18 +18,20 @@
 //! Only the space is coarser: the modes still receive the run's real flux, one value per
 //! point (the projection Φᵀ F of every point's input), and a flux outside the shapes' span is
 //! answered by its Galerkin projection, not dropped. Measured by `examples/heat_reduction.rs`
-//! against the full model (docs/convergence.md, "The reduced heat model"), with half as many
-//! shapes as points: on punch-b40-heat (65 points, 33 shapes) 202 modes instead of 305, the
-//! contact temperature within 1.7e-3 of its rise (1.5e-3 with one input per point) and the
-//! thermal gap within 6.9e-4 of its size (4.1e-4); on 16 elements (129 points, 65 shapes)
-//! 314 modes instead of 464, 1.8e-3 (1.9e-3) and 1.4e-3 (8.9e-4). The temperature stays
-//! within the 0.15–0.2 % of the rise the reduced model was measured to before; the gap's
-//! error grows by up to 1.7 times, to a few nanometres against its 2.7 µm, and the run's
-//! results move by less than 1e-4 of their size (punch-b40-heat's pressures by 6e-5 of the
-//! peak, its contact temperatures by 5e-5 of their largest value). A fixed number
-//! of shapes is not enough under refinement: the corner peaks sharpen as the elements shrink
-//! (16 elements: 40 shapes leave 2.4e-3 of the rise, 32 leave 4.7e-3), so the number follows
-//! the points, half of them and at least [`FEWEST`].
+//! against the full model (docs/convergence.md, "The reduced heat model"). With half as many
+//! shapes as points (until 2026-11-30): on punch-b40-heat (65 points, 33 shapes) 202 modes
+//! instead of 305, the contact temperature within 1.7e-3 of its rise (1.5e-3 with one input
+//! per point) and the thermal gap within 6.9e-4 of its size (4.1e-4); on 16 elements (129
+//! points, 65 shapes) 314 modes instead of 464, 1.8e-3 (1.9e-3) and 1.4e-3 (8.9e-4). With a
+//! third as many and the reduction's seventh shift, 32/h ([`super::SHIFTS`]): 22 shapes, 165
+//! modes, 1.2e-3 and 9.2e-4; on 16 elements 43 shapes, 278 modes, 5.3e-4 and 9.4e-4. The
+//! shift at 32/h resolves the ripple within a half period that the fewer shapes would lose
+//! (a third as many shapes at the six shifts before: 2.2e-3 and 1.1e-3), and costs no more
+//! time: the eight factorisations run two at a time in four rounds, as the seven did. A
+//! fixed number of shapes is not enough under refinement: the corner peaks sharpen as the
+//! elements shrink (16 elements, half as many shapes as before: 40 shapes left 2.4e-3 of the
+//! rise, 32 left 4.7e-3), so the number follows the points, a third of them and at least
+//! [`FEWEST`].
 //!
 //! Under monotonic sliding the heat of a point enters material that carries it along the
 //! contact in a thin layer (Péclet numbers up to 1800): the response of each point is its
@@ -40,15 +42,15 @@ use crate::geometry::Point;
 use faer::Mat;
 
 /// The fewest shapes used: a contact of at most that many points keeps one input per point.
-pub const FEWEST: usize = 32;
+pub const FEWEST: usize = 16;
 
 /// The shapes (points × m, dimensionless) of the contact's heat at the contact points `x`
 /// (mm, ordered along the contact): Chebyshev polynomials of the chord length along them,
-/// m = max(⌈n/2⌉, [`FEWEST`]). None when that is not fewer than the points (one input per
+/// m = max(⌈n/3⌉, [`FEWEST`]). None when that is not fewer than the points (one input per
 /// point is then as cheap) or the points do not span a length.
 pub fn shapes(x: &[Point]) -> Option<Mat<f64>> {
     let n = x.len();
-    let m = n.div_ceil(2).max(FEWEST);
+    let m = n.div_ceil(3).max(FEWEST);
     if m >= n {
         return None;
     }
@@ -75,12 +77,12 @@ mod tests {
     use super::*;
 
     #[test]
-    fn half_as_many_chebyshev_shapes_as_points() {
+    fn a_third_as_many_chebyshev_shapes_as_points() {
         let points: Vec<Point> = (0..65)
             .map(|i| [1070.0 + i as f64 * 60.0 / 64.0, 100.0])
             .collect();
         let t = shapes(&points).unwrap();
-        assert_eq!((t.nrows(), t.ncols()), (65, 33));
+        assert_eq!((t.nrows(), t.ncols()), (65, 22));
         // T_0 = 1, T_1 the position, T_2 = 2 s² − 1 at both ends and the middle.
         for i in [0, 32, 64] {
             let s = i as f64 / 32.0 - 1.0;
