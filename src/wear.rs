@@ -229,6 +229,8 @@ pub struct StepRecord {
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub temperatures: Vec<f64>,
     /// With heat: the largest temperature of body 1 and of body 2 at the step's end, °C.
+    /// Filled when the run ends (computed for many steps at once): None in the callback
+    /// that sees each step as it is made.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_temperature: Option<[f64; 2]>,
 }

@@ -723,3 +723,36 @@ fn the_default_spaces_give_the_tensor_product_temperatures() {
     assert!(auto_error < 1e-4, "{auto_error}");
     assert!(trunk_error > 1e-3, "{trunk_error}");
 }
+
+#[test]
+fn the_largest_temperatures_computed_in_chunks_are_each_steps_own() {
+    // Each body's largest temperature per step is computed after the run, many steps at a
+    // time (one matrix product per chunk of steps). A snapshot keeps the modal state its
+    // step was solved with, the end state of the step before: the model's extremes of that
+    // state must be that step's record, to round-off (1e-12 of the temperature), on both
+    // sides of the chunks' boundaries (128 steps) and in the last, partial chunk.
+    let problem = heat_problem(&[(
+        "record = [1, 2, 50, 100, 200, 500, 1000, 1699, 1700]",
+        "record = [2, 128, 129, 130, 256, 257, 300]",
+    )]);
+    let run = common::run(&problem, Some(300));
+    let model = run.heat_model.as_ref().expect("a run with heat");
+    for snapshot in &run.history.snapshots {
+        let state = snapshot.thermal_state.as_ref().expect("a state with heat");
+        let expected = model.max_temperatures(state);
+        let record = &run.history.steps[snapshot.step - 2];
+        let got = record.max_temperature.expect("filled at the end");
+        for b in 0..2 {
+            assert!(
+                (got[b] - expected[b]).abs() < 1e-12 * expected[b].abs(),
+                "step {}: {got:?} vs {expected:?}",
+                record.step
+            );
+        }
+    }
+    assert!(run
+        .history
+        .steps
+        .iter()
+        .all(|s| s.max_temperature.is_some()));
+}

@@ -201,14 +201,15 @@ impl WearIntegrator {
                 Some(h) => {
                     ws.solved_thermal.clone_from(&ws.thermal);
                     ws.solved_modal.clone_from(&h.state.a);
-                    let (t, m) = h.after_step(
+                    let t = h.after_step(
                         &ws.solution.pressure,
                         direction,
                         k,
                         first_half && !monotonic,
                     );
                     ws.thermal.clone_from(&h.gap);
-                    (t, Some(m))
+                    // Filled at the end ([`HeatRun`] computes them in chunks).
+                    (t, None)
                 }
                 None => (Vec::new(), None),
             };
@@ -339,8 +340,11 @@ impl WearIntegrator {
         }
         hist.shape = written;
         hist.contact_shape = contact_shape;
-        if let Some(h) = &heat {
+        if let Some(h) = heat.as_mut() {
             hist.thermal = Some(h.finish(ws.solved_thermal.clone(), ws.solved_modal.clone()));
+            for (record, maxima) in hist.steps.iter_mut().zip(h.maxima()) {
+                record.max_temperature = Some(*maxima);
+            }
         }
         hist.body_wear = self.body_wear(points, initial, &hist.shape, &worn);
         for (depth, w) in hist.worn_depth.iter_mut().zip(&hist.body_wear) {

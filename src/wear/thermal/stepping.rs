@@ -5,7 +5,8 @@
 use super::{Dynamics, Propagator, Propagators, Sliding, ThermalModel};
 use crate::complementarity::Direction;
 use crate::conduction::reduced::{constant_gain, decay};
-use faer::Mat;
+use faer::linalg::matmul::matmul;
+use faer::{Accum, Mat, MatMut, MatRef, Par};
 use std::sync::Arc;
 
 /// Column `j` of an owned (column-major) matrix.
@@ -70,7 +71,15 @@ pub struct ThermalState {
     /// The k of the current cycle's first step.
     first_k: usize,
     scratch: Vec<f64>,
+    /// Per number of alternating pairs m met so far (a few: the schedule's k repeat), each
+    /// mode's decay over m cycles and its geometric sum ([`ThermalModel::alternate`]): two
+    /// exponentials per mode and step otherwise.
+    cycle_sums: Vec<(usize, Vec<[f64; 2]>)>,
 }
+
+/// How many pair counts [`ThermalState`] keeps the sums of: a schedule has a few k, and each
+/// k two pair counts (its cycle's first step and the whole cycle).
+const KEPT_SUMS: usize = 8;
 
 impl ThermalModel {
     /// The state at the start of a run.
@@ -86,6 +95,7 @@ impl ThermalModel {
             last_heat: [0.0; 2],
             first_k: 0,
             scratch: vec![0.0; self.modes()],
+            cycle_sums: Vec::new(),
         }
     }
 
@@ -137,22 +147,20 @@ impl ThermalModel {
     /// The modal load of the frictional flux of `pressure` (MPa) per unit sliding speed:
     /// Φᵀ F (μ p), mW·s/mm per mm/s of speed.
     fn modal_flux(&self, pressure: &[f64], out: &mut [f64]) {
+        let q: Vec<f64> = pressure
+            .iter()
+            .map(|&p| self.friction * p.max(0.0))
+            .collect();
         out.iter_mut().for_each(|o| *o = 0.0);
-        for (i, &p) in pressure.iter().enumerate() {
-            let q = self.friction * p.max(0.0);
-            if q == 0.0 {
-                continue;
-            }
-            let column = self
-                .flux_modal
-                .col(i)
-                .try_as_col_major()
-                .expect("an owned matrix's columns are contiguous")
-                .as_slice();
-            for (o, f) in out.iter_mut().zip(column) {
-                *o += f * q;
-            }
-        }
+        let modes = out.len();
+        matmul(
+            MatMut::from_column_major_slice_mut(out, modes, 1),
+            Accum::Add,
+            self.flux_modal.as_ref(),
+            MatRef::from_column_major_slice(&q, q.len(), 1),
+            1.0,
+            Par::Seq,
+        );
     }
 
     /// What one half period of reciprocating sliding at `pressure` adds to each modal
@@ -179,18 +187,39 @@ impl ThermalModel {
         first: &[f64],
         second: &[f64],
         halves: usize,
+        sums: &mut Vec<(usize, Vec<[f64; 2]>)>,
         to: &mut [f64],
     ) {
         let h = self.sliding.half_period();
         let pairs = halves / 2;
         let (rates, gains) = self.modal();
+        let kept = match sums.iter().position(|(m, _)| *m == pairs) {
+            Some(i) => i,
+            None => {
+                if sums.len() == KEPT_SUMS {
+                    sums.remove(0);
+                }
+                let period = 2.0 * h;
+                let each = rates
+                    .iter()
+                    .map(|&rate| {
+                        [
+                            decay(rate, period * pairs as f64),
+                            geometric_sum(rate, period, pairs),
+                        ]
+                    })
+                    .collect();
+                sums.push((pairs, each));
+                sums.len() - 1
+            }
+        };
+        let cycle = &sums[kept].1;
         for j in 0..rates.len() {
-            let rate = rates[j];
             let e = gains[j].0;
             let mut a = from[j];
             if pairs > 0 {
-                a = decay(rate, 2.0 * h * pairs as f64) * a
-                    + geometric_sum(rate, 2.0 * h, pairs) * (e * first[j] + second[j]);
+                let [decayed, summed] = cycle[j];
+                a = decayed * a + summed * (e * first[j] + second[j]);
             }
             if halves % 2 == 1 {
                 a = e * a + first[j];
@@ -238,7 +267,8 @@ impl ThermalModel {
                     state.first_k = k;
                     let halves = if k % 2 == 1 { k } else { k - 1 };
                     let mut to = std::mem::take(&mut state.a);
-                    self.alternate(&state.cycle, &increment, &other, halves, &mut to);
+                    let sums = &mut state.cycle_sums;
+                    self.alternate(&state.cycle, &increment, &other, halves, sums, &mut to);
                     state.a = to;
                     let others = (halves / 2) as f64;
                     state.generated = state.cycle_generated
@@ -250,7 +280,8 @@ impl ThermalModel {
                     // where a schedule changes k between the two).
                     let halves = state.first_k.max(1) + k;
                     let mut to = std::mem::take(&mut state.a);
-                    self.alternate(&state.cycle, &other, &increment, halves, &mut to);
+                    let sums = &mut state.cycle_sums;
+                    self.alternate(&state.cycle, &other, &increment, halves, sums, &mut to);
                     state.a = to;
                     state.cycle.copy_from_slice(&state.a);
                     let (firsts, seconds) = (halves - halves / 2, halves / 2);
@@ -306,9 +337,9 @@ impl ThermalModel {
         state.scratch = increment;
     }
 
-    /// The largest temperature on each body's boundary, °C.
-    pub fn max_temperatures(&self, state: &ThermalState) -> [f64; 2] {
-        self.boundary_extremes(&state.a).map(|[_, high]| high)
+    /// The largest temperature on each body's boundary samples at modal coordinates `a`, °C.
+    pub fn max_temperatures(&self, a: &[f64]) -> [f64; 2] {
+        self.boundary_extremes(a).map(|[_, high]| high)
     }
 
     /// The lowest and the largest temperature (°C) on each body's boundary samples at
@@ -322,6 +353,30 @@ impl ThermalModel {
                     [low.min(t), high.max(t)]
                 })
         })
+    }
+
+    /// [`ThermalModel::boundary_extremes`] of each column of `states` (modes × states), by
+    /// one matrix product per body.
+    pub fn boundary_extremes_of(&self, states: MatRef<'_, f64>) -> Vec<[[f64; 2]; 2]> {
+        let mut extremes = vec![[[f64::INFINITY, f64::NEG_INFINITY]; 2]; states.ncols()];
+        for (b, output) in self.boundary.iter().enumerate() {
+            let mut values = Mat::<f64>::zeros(output.offset.len(), states.ncols());
+            matmul(
+                values.as_mut(),
+                Accum::Replace,
+                output.matrix.as_ref(),
+                states,
+                1.0,
+                Par::Seq,
+            );
+            for (j, e) in extremes.iter_mut().enumerate() {
+                for (v, c) in values.col(j).iter().zip(&output.offset) {
+                    let t = v + c;
+                    e[b] = [e[b][0].min(t), e[b][1].max(t)];
+                }
+            }
+        }
+        extremes
     }
 
     /// Heat stored in both bodies relative to the reference temperature, mJ.
