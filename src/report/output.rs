@@ -214,7 +214,7 @@ pub fn contact_window(p_plus: &[f64], p_minus: Option<&[f64]>) -> Option<std::op
 ///
 /// The summary holds the run's warnings, whose checks (the check in p sets the problem up
 /// again at p + 2) take about as long as drawing the figures: the two are made side by side,
-/// and the figures of the run's history beside those of its last cycle.
+/// and the figures of the run's history beside those of its last cycle and of its heat.
 pub fn write_wear(
     dir: &Path,
     problem: &crate::problem::Problem,
@@ -226,9 +226,13 @@ pub fn write_wear(
             rayon::join(
                 || write_wear_tables(dir, problem, run),
                 || {
+                    // The heat's table and figures beside the others (their own files).
                     let name = crate::plot::problem_name(&problem.file);
-                    write_heat(dir, &name, run)?;
-                    crate::plot::wear_figures(dir, &name, run).map_err(plot_error(dir))
+                    let (heat, figures) = rayon::join(
+                        || write_heat(dir, &name, run),
+                        || crate::plot::wear_figures(dir, &name, run).map_err(plot_error(dir)),
+                    );
+                    heat.and(figures)
                 },
             )
         },
