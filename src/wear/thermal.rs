@@ -295,8 +295,10 @@ pub(super) struct HeatRun<'a> {
     /// The thermal gap's change over the last complete cycle (mm).
     pub cycle_change: Vec<f64>,
     /// The modal states of the steps whose extremes are not yet computed (modes × steps,
-    /// column by column).
+    /// column by column), and how many steps they are (a model without modes has states
+    /// of no values).
     pending: Vec<f64>,
+    pending_steps: usize,
     /// Each step's largest temperature of body 1 and body 2 (°C), for the chunks done.
     maxima: Vec<[f64; 2]>,
 }
@@ -318,6 +320,7 @@ impl<'a> HeatRun<'a> {
             gap,
             lowest: f64::INFINITY,
             pending: Vec::new(),
+            pending_steps: 0,
             maxima: Vec::new(),
         }
     }
@@ -335,7 +338,8 @@ impl<'a> HeatRun<'a> {
             .advance(&mut self.state, pressure, direction, k, first_half);
         self.model.thermal_gap(&self.state, &mut self.gap);
         self.pending.extend_from_slice(&self.state.a);
-        if self.pending.len() >= EXTREMES_CHUNK * self.state.a.len() {
+        self.pending_steps += 1;
+        if self.pending_steps == EXTREMES_CHUNK {
             self.flush_extremes();
         }
         self.model.probes.at(&self.state.a)
@@ -343,19 +347,18 @@ impl<'a> HeatRun<'a> {
 
     /// The boundary extremes of the pending steps.
     fn flush_extremes(&mut self) {
-        let modes = self.state.a.len();
-        if modes == 0 || self.pending.is_empty() {
-            self.pending.clear();
+        if self.pending_steps == 0 {
             return;
         }
-        let states =
-            MatRef::from_column_major_slice(&self.pending, modes, self.pending.len() / modes);
+        let modes = self.state.a.len();
+        let states = MatRef::from_column_major_slice(&self.pending, modes, self.pending_steps);
         let extremes = self.model.boundary_extremes_of(states);
         for [[low1, high1], [low2, high2]] in extremes {
             self.lowest = self.lowest.min(low1).min(low2);
             self.maxima.push([high1, high2]);
         }
         self.pending.clear();
+        self.pending_steps = 0;
     }
 
     /// Each kept step's largest temperature of body 1 and of body 2 (°C), in step order.

@@ -192,6 +192,21 @@ fn chain_of(
 }
 
 /// v_max L / (2 a) of body `b` at the contact (see [`super::ThermalInfo::peclet`]).
+/// The smallest diffusivity (mm²/s) of body `b`'s materials along its contact edge: that of
+/// the thinnest thermal layer there.
+pub(super) fn contact_diffusivity(
+    input: &ThermalBodies<'_>,
+    body: &ConductionBody,
+    b: usize,
+) -> f64 {
+    input.settings.bodies[b]
+        .contact_edge
+        .iter()
+        .filter_map(|&(e, _)| body.mesh.elements.get(e))
+        .map(|e| input.settings.materials[e.material].diffusivity())
+        .fold(f64::INFINITY, f64::min)
+}
+
 pub(super) fn peclet(input: &ThermalBodies<'_>, body: &ConductionBody, b: usize) -> f64 {
     let speed = match input.sliding {
         Sliding::Reciprocating { amplitude, omega } => amplitude * omega,

@@ -2,7 +2,7 @@
 //! the interface of perfect contact ([`CoupledSystem`]: the full model, which the tests step
 //! as the reference), and its reduction to the modes the run steps ([`ThermalModel`]).
 
-use super::bodies::{conduction_spec, peclet};
+use super::bodies::{conduction_spec, contact_diffusivity, peclet};
 use super::outputs::{boundary_samples, stored_output, thermal_gap, GapOutput, Output};
 use super::{Dynamics, Sliding, ThermalFields, ThermalInfo, ThermalModel, INTERFACE_CONDUCTANCE};
 use crate::basis::Space;
@@ -354,7 +354,12 @@ impl CoupledSystem {
             area,
             // A flowing body's heat stays with its point (see the shapes' module).
             shapes: if symmetric {
-                super::shapes::shapes(&contact.points.x)
+                let diffusivity = [0, 1]
+                    .map(|b| contact_diffusivity(input, &thermal[b], b))
+                    .into_iter()
+                    .fold(f64::INFINITY, f64::min);
+                let depth = (diffusivity * input.sliding.half_period()).sqrt();
+                super::shapes::shapes(&contact.points.x, depth)
             } else {
                 None
             },

@@ -33,6 +33,18 @@
 //! rise, 32 left 4.7e-3), so the number follows the points, a third of them and at least
 //! [`FEWEST`].
 //!
+//! Nor is it enough for fast sliding: the heat of a half period h reaches √(a h) into the
+//! body (a its diffusivity), 0.8 mm in punch-b40-heat's composite at ω = 10 rad/s, 0.15 mm at
+//! 300, and a layer thinner than the flux's features answers each point's own heat. A review
+//! found a third as many shapes 2.5e-2 of the rise off after one half period at ω = 100 and
+//! 0.19 (in each body's largest temperature) over 300 steps at ω = 300, where one input per
+//! point stays within 3e-4 and 2.5e-3 of a converged model. So the number is also at least
+//! one per [`DEPTHS_PER_SHAPE`] thermal depths along the contact, and past half the points
+//! the inputs are one per point (tests/heat.rs, `the_reduced_model_follows_the_full_one_at_
+//! slow_and_fast_sliding`: at ω = 10, 30, 100 the contact temperature within 2.2e-3, 5.9e-4
+//! and 4.0e-4 of its rise from the full model over six half periods; a third as many shapes
+//! at ω = 30 was 6.2e-3 off).
+//!
 //! Under monotonic sliding the heat of a point enters material that carries it along the
 //! contact in a thin layer (Péclet numbers up to 1800): the response of each point is its
 //! own, and the inputs stay one per point (the caller decides: [`shapes`] is only asked for a
@@ -44,24 +56,37 @@ use faer::Mat;
 /// The fewest shapes used: a contact of at most that many points keeps one input per point.
 pub const FEWEST: usize = 16;
 
+/// Diffusion lengths per shape: the contact's heat needs a shape per this many thermal
+/// depths √(a h) along the contact (module docs).
+pub const DEPTHS_PER_SHAPE: f64 = 4.0;
+
 /// The shapes (points × m, dimensionless) of the contact's heat at the contact points `x`
-/// (mm, ordered along the contact): Chebyshev polynomials of the chord length along them,
-/// m = max(⌈n/3⌉, [`FEWEST`]). None when that is not fewer than the points (one input per
-/// point is then as cheap) or the points do not span a length.
-pub fn shapes(x: &[Point]) -> Option<Mat<f64>> {
+/// (mm, ordered along the contact) whose heat of a half period reaches `depth` = √(a h) (mm;
+/// a the smallest diffusivity at the contact, h the half period): Chebyshev polynomials of
+/// the chord length L along them, m = max(⌈n/3⌉, ⌈L/(4 depth)⌉, [`FEWEST`]). None (one
+/// input per point) when that is more than half the points, or the points do not span a
+/// length.
+pub fn shapes(x: &[Point], depth: f64) -> Option<Mat<f64>> {
     let n = x.len();
-    let m = n.div_ceil(3).max(FEWEST);
-    if m >= n {
-        return None;
-    }
     let mut chord = Vec::with_capacity(n);
     chord.push(0.0);
     for i in 1..n {
         let step = (x[i][0] - x[i - 1][0]).hypot(x[i][1] - x[i - 1][1]);
         chord.push(chord[i - 1] + step);
     }
-    let length = chord[n - 1];
+    let length = *chord.last()?;
     if length <= 0.0 || !length.is_finite() {
+        return None;
+    }
+    let by_depth = (length / (DEPTHS_PER_SHAPE * depth)).ceil();
+    if by_depth.is_nan() || by_depth >= n as f64 {
+        // Also a depth of zero or NaN: one input per point.
+        return None;
+    }
+    let m = n.div_ceil(3).max(FEWEST).max(by_depth as usize);
+    // Past half the points the polynomials miss what they leave out in the contact's middle
+    // (their zeros crowd at its ends), where a thin layer answers each point's own heat.
+    if m >= n || 2 * m > n.max(2 * FEWEST) {
         return None;
     }
     // T_j(s) = cos(j arccos s) with s ∈ [−1, 1]: bounded by 1, and well conditioned as
@@ -81,7 +106,8 @@ mod tests {
         let points: Vec<Point> = (0..65)
             .map(|i| [1070.0 + i as f64 * 60.0 / 64.0, 100.0])
             .collect();
-        let t = shapes(&points).unwrap();
+        // A deep thermal layer (1 mm over 60 mm: 15 shapes by depth): a third of the points.
+        let t = shapes(&points, 1.0).unwrap();
         assert_eq!((t.nrows(), t.ncols()), (65, 22));
         // T_0 = 1, T_1 the position, T_2 = 2 s² − 1 at both ends and the middle.
         for i in [0, 32, 64] {
@@ -91,7 +117,13 @@ mod tests {
             assert!((t[(i, 2)] - (2.0 * s * s - 1.0)).abs() < 1e-12);
         }
         // At least FEWEST shapes; at most FEWEST points: one input per point.
-        assert_eq!(shapes(&points[..40]).unwrap().ncols(), FEWEST);
-        assert!(shapes(&points[..FEWEST]).is_none());
+        assert_eq!(shapes(&points[..40], 1.0).unwrap().ncols(), FEWEST);
+        assert!(shapes(&points[..FEWEST], 1.0).is_none());
+        // A thin layer needs more: 0.5 mm, 30 shapes; 0.4 mm, 38, more than half the points:
+        // one input per point.
+        assert_eq!(shapes(&points, 0.5).unwrap().ncols(), 30);
+        assert!(shapes(&points, 0.4).is_none());
+        assert!(shapes(&points, 0.0).is_none());
+        assert!(shapes(&points, f64::NAN).is_none());
     }
 }
