@@ -235,22 +235,20 @@ fn schedules_agree_with_single_half_periods() {
 
 #[test]
 fn heat_balance_in_a_transient_and_in_the_steady_state() {
-    use wearfem::complementarity::{ContactSolver, Direction, Method};
-    use wearfem::contact::CondensedContact;
+    use wearfem::complementarity::Direction;
     use wearfem::wear::thermal::{CoupledSystem, Sliding, ThermalBodies, ThermalModel};
     // Energy (the bounds, 0.5 %): in a transient, the heat stored plus the heat
     // lost through held and convecting edges and the faces equals the frictional heat made;
     // in the periodic steady state what a period makes leaves. The full model is stepped by
     // SDIRK2 (32 steps a half period) with the losses integrated by the trapezoidal rule,
     // both second order: the balance closes to about 1e-4 (docs/validation.md).
-    let problem = heat_problem(&[]);
-    let settings = problem.heat_settings().unwrap().unwrap();
-    let (contact, body1, body2) = CondensedContact::build(&problem).unwrap();
-    let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
-    let pressures: Vec<Vec<f64>> = [Direction::Plus, Direction::Minus]
-        .iter()
-        .map(|&d| solver.solve(&contact.points.initial_gap, d).0.pressure)
-        .collect();
+    let HeatSetup {
+        problem,
+        settings,
+        contact,
+        bodies: [body1, body2],
+        pressures,
+    } = setup(&[]);
     let (amplitude, omega, mu) = (1.5, 10.0, contact.friction);
     let input = ThermalBodies {
         elastic: [&body1, &body2],
@@ -439,23 +437,33 @@ fn the_fields_reproduce_the_thermal_gap_the_contact_saw() {
     }
 }
 
-/// punch-b40-heat's heat problem (full and reduced) and the pressures of its first '+' and
-/// '−' solves.
+/// punch-b40-heat with `edits`: its contact, bodies, validated `[heat]` section and the
+/// pressures of its first '+' and '−' solves.
 struct HeatSetup {
     problem: Problem,
+    settings: wearfem::heat_input::HeatSettings,
+    contact: wearfem::contact::CondensedContact,
+    bodies: [wearfem::elasticity::ElasticBody; 2],
     pressures: Vec<Vec<f64>>,
 }
 
 fn setup(edits: &[(&str, &str)]) -> HeatSetup {
     use wearfem::complementarity::{ContactSolver, Direction, Method};
     let problem = heat_problem(edits);
-    let (contact, ..) = wearfem::contact::CondensedContact::build(&problem).unwrap();
+    let settings = problem.heat_settings().unwrap().unwrap();
+    let (contact, body1, body2) = wearfem::contact::CondensedContact::build(&problem).unwrap();
     let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
     let pressures = [Direction::Plus, Direction::Minus]
         .iter()
         .map(|&d| solver.solve(&contact.points.initial_gap, d).0.pressure)
         .collect();
-    HeatSetup { problem, pressures }
+    HeatSetup {
+        problem,
+        settings,
+        contact,
+        bodies: [body1, body2],
+        pressures,
+    }
 }
 
 #[test]
@@ -549,12 +557,11 @@ fn the_periodic_temperature_repeats_under_the_full_model() {
     // period makes. The reduced model's own error (docs/convergence.md: 1e-3 of the rise)
     // bounds the first; the second holds to the integration's 1e-4 (the transient balance).
     let s = setup(&[]);
-    let (contact, body1, body2) = wearfem::contact::CondensedContact::build(&s.problem).unwrap();
-    let settings = s.problem.heat_settings().unwrap().unwrap();
+    let (contact, [body1, body2], settings) = (&s.contact, &s.bodies, &s.settings);
     let input = wearfem::wear::thermal::ThermalBodies {
-        elastic: [&body1, &body2],
-        contact: &contact,
-        settings: &settings,
+        elastic: [body1, body2],
+        contact,
+        settings,
         space: s.problem.discretisation.space,
         sliding: wearfem::wear::thermal::Sliding::Reciprocating {
             amplitude: 1.5,
@@ -759,8 +766,7 @@ fn the_largest_temperatures_computed_in_chunks_are_each_steps_own() {
 
 #[test]
 fn the_reduced_model_follows_the_full_one_at_slow_and_fast_sliding() {
-    use wearfem::complementarity::{ContactSolver, Direction, Method};
-    use wearfem::contact::CondensedContact;
+    use wearfem::complementarity::Direction;
     use wearfem::wear::thermal::{CoupledSystem, Sliding, ThermalBodies, ThermalModel};
     // The contact's heat enters the reduction in fewer shapes than points, as many as the
     // thermal layer of a half period needs (wearfem::wear::thermal::shapes): the faster the
@@ -770,14 +776,13 @@ fn the_reduced_model_follows_the_full_one_at_slow_and_fast_sliding() {
     // input per point), the contact temperature within 5e-3 of its rise: half the issue's
     // 1 % for the temperature, measured 1e-3 or less. A third as many shapes whatever the
     // speed was 2.5e-2 off at ω = 100 (a review's finding).
-    let problem = heat_problem(&[]);
-    let settings = problem.heat_settings().unwrap().unwrap();
-    let (contact, body1, body2) = CondensedContact::build(&problem).unwrap();
-    let mut solver = ContactSolver::new(&contact, Method::ActiveSet);
-    let pressures: Vec<Vec<f64>> = [Direction::Plus, Direction::Minus]
-        .iter()
-        .map(|&d| solver.solve(&contact.points.initial_gap, d).0.pressure)
-        .collect();
+    let HeatSetup {
+        problem,
+        settings,
+        contact,
+        bodies: [body1, body2],
+        pressures,
+    } = setup(&[]);
     let amplitude = 1.5;
     for omega in [10.0, 30.0, 100.0] {
         let input = ThermalBodies {
